@@ -1,0 +1,43 @@
+// Wall-clock timers by phase (named as in DESIGN.md's "one time step"), summed over a run and written to
+// summary.json. A ScopedTimer adds the time spent in its scope to one phase.
+#pragma once
+
+#include <chrono>
+#include <map>
+#include <string>
+
+namespace halfeti {
+
+class PhaseTimers {
+ public:
+  void add(const std::string& phase, double seconds) { seconds_[phase] += seconds; }
+  double seconds(const std::string& phase) const {
+    auto it = seconds_.find(phase);
+    return it == seconds_.end() ? 0.0 : it->second;
+  }
+  const std::map<std::string, double>& all() const { return seconds_; }
+  void merge(const PhaseTimers& other) {
+    for (const auto& [k, v] : other.seconds_) seconds_[k] += v;
+  }
+
+ private:
+  std::map<std::string, double> seconds_;
+};
+
+class ScopedTimer {
+ public:
+  ScopedTimer(PhaseTimers& timers, std::string phase)
+      : timers_(timers), phase_(std::move(phase)), start_(std::chrono::steady_clock::now()) {}
+  ~ScopedTimer() {
+    timers_.add(phase_, std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
+  }
+  ScopedTimer(const ScopedTimer&) = delete;
+  ScopedTimer& operator=(const ScopedTimer&) = delete;
+
+ private:
+  PhaseTimers& timers_;
+  std::string phase_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace halfeti
