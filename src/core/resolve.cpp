@@ -1,0 +1,279 @@
+// Checking a raw scene tree against its schema (schema.hpp).
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "halfeti/core/error.hpp"
+#include "halfeti/core/schema.hpp"
+
+namespace halfeti::scene {
+
+namespace {
+
+std::string join_path(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+
+std::string scalar_text(const YAML::Node& n) {
+  if (!n.IsDefined() || n.IsNull()) return "nothing";
+  if (n.IsScalar()) return "'" + n.Scalar() + "'";
+  if (n.IsSequence()) return "a list";
+  if (n.IsMap()) return "a section";
+  return "an unreadable value";
+}
+
+class Resolver {
+ public:
+  explicit Resolver(const Origin& origin) : origin_(origin) {}
+
+  YAML::Node section(const YAML::Node& raw, const Schema& schema, const std::string& path, const YAML::Node& at) {
+    if (raw.IsDefined() && !raw.IsNull() && !raw.IsMap())
+      fail(raw, path, "expected a section (key: value lines), found " + scalar_text(raw));
+    const YAML::Node in = (raw.IsDefined() && raw.IsMap()) ? raw : YAML::Node(YAML::NodeType::Map);
+    const YAML::Node& located = (raw.IsDefined() && !raw.IsNull()) ? raw : at;
+
+    std::vector<const Key*> keys;
+    for (const auto& k : schema.keys()) keys.push_back(&k);
+    const Schema* variant = nullptr;
+    std::string variant_name;
+    if (!schema.discriminator_key().empty()) {
+      const Key* dk = schema.find(schema.discriminator_key());
+      const YAML::Node d = in[dk->name()];
+      YAML::Node resolved_d;
+      if (d.IsDefined())
+        resolved_d = value(d, *dk, join_path(path, dk->name()));
+      else if (dk->default_yaml())
+        resolved_d = YAML::Node(*dk->default_yaml());
+      else
+        fail(located, join_path(path, dk->name()), "required key missing: expected " + dk->expectation());
+      variant_name = resolved_d.Scalar();
+      auto it = schema.variants().find(variant_name);
+      if (it != schema.variants().end()) {
+        variant = it->second.get();
+        for (const auto& k : variant->keys()) keys.push_back(&k);
+      }
+    }
+
+    for (auto it = in.begin(); it != in.end(); ++it) {
+      const std::string name = it->first.Scalar();
+      const bool known = std::any_of(keys.begin(), keys.end(), [&](const Key* k) { return k->name() == name; });
+      if (known) continue;
+      std::vector<std::string> names;
+      for (const Key* k : keys) names.push_back(k->name());
+      std::string msg = "unknown key '" + join_path(path, name) + "'";
+      if (!variant_name.empty()) msg += " for " + schema.discriminator_key() + " '" + variant_name + "'";
+      const std::string near = closest_name(name, names);
+      if (!near.empty()) {
+        msg += "; did you mean '" + near + "'?";
+      } else {
+        msg += "; expected one of: ";
+        for (size_t i = 0; i < names.size(); ++i) msg += (i ? ", " : "") + names[i];
+      }
+      fail(it->first, join_path(path, name), msg);
+    }
+
+    YAML::Node out(YAML::NodeType::Map);
+    for (const Key* k : keys) {
+      const std::string kp = join_path(path, k->name());
+      const YAML::Node v = in[k->name()];
+      if (v.IsDefined() && !(v.IsNull() && k->kind() == ValueKind::kSection)) {
+        out[k->name()] = value(v, *k, kp);
+      } else if (v.IsDefined() && v.IsNull()) {
+        out[k->name()] = section(YAML::Node(YAML::NodeType::Map), *k->schema(), kp, v);
+      } else if (k->default_yaml()) {
+        out[k->name()] = value(YAML::Load(*k->default_yaml()), *k, kp);
+      } else if (k->is_required()) {
+        fail(located, kp, "required key missing: expected " + k->expectation());
+      } else if (k->kind() == ValueKind::kSection && k->is_always()) {
+        out[k->name()] = section(YAML::Node(YAML::NodeType::Map), *k->schema(), kp, located);
+      } else if (k->kind() == ValueKind::kList) {
+        out[k->name()] = YAML::Node(YAML::NodeType::Sequence);
+      }
+    }
+    return out;
+  }
+
+  YAML::Node value(const YAML::Node& v, const Key& key, const std::string& path) {
+    const auto expected = [&]() { return "expected " + key.expectation() + ", found " + scalar_text(v); };
+    switch (key.kind()) {
+      case ValueKind::kReal: {
+        const double x = number(v, key, path);
+        check_range(v, key, path, x);
+        return YAML::Node(v.Scalar());
+      }
+      case ValueKind::kInteger: {
+        long long n = 0;
+        if (!v.IsScalar() || !YAML::convert<long long>::decode(v, n)) fail(v, path, expected());
+        check_range(v, key, path, static_cast<double>(n));
+        return YAML::Node(std::to_string(n));
+      }
+      case ValueKind::kBool: {
+        bool b = false;
+        if (!v.IsScalar() || !YAML::convert<bool>::decode(v, b)) fail(v, path, expected());
+        return YAML::Node(b ? "true" : "false");
+      }
+      case ValueKind::kString:
+        if (!v.IsScalar() || v.Scalar().empty()) fail(v, path, expected());
+        return YAML::Node(v.Scalar());
+      case ValueKind::kChoice: {
+        if (!v.IsScalar()) fail(v, path, expected());
+        const auto& c = key.choices();
+        if (std::find(c.begin(), c.end(), v.Scalar()) == c.end()) {
+          std::string msg = expected();
+          const std::string near = closest_name(v.Scalar(), c);
+          if (!near.empty()) msg += "; did you mean '" + near + "'?";
+          fail(v, path, msg);
+        }
+        return YAML::Node(v.Scalar());
+      }
+      case ValueKind::kPoint: {
+        if (!v.IsSequence() || v.size() != 2) fail(v, path, expected());
+        YAML::Node out(YAML::NodeType::Sequence);
+        out.SetStyle(YAML::EmitterStyle::Flow);
+        for (size_t i = 0; i < 2; ++i) {
+          number(v[i], key, path + "[" + std::to_string(i) + "]");
+          out.push_back(v[i].Scalar());
+        }
+        return out;
+      }
+      case ValueKind::kRealList: {
+        if (!v.IsSequence()) fail(v, path, expected());
+        if (static_cast<int>(v.size()) < key.min_items_count())
+          fail(v, path, "expected at least " + std::to_string(key.min_items_count()) + " numbers, found " +
+                            std::to_string(v.size()));
+        YAML::Node out(YAML::NodeType::Sequence);
+        out.SetStyle(YAML::EmitterStyle::Flow);
+        for (size_t i = 0; i < v.size(); ++i) {
+          const std::string ip = path + "[" + std::to_string(i) + "]";
+          check_range(v[i], key, ip, number(v[i], key, ip));
+          out.push_back(v[i].Scalar());
+        }
+        return out;
+      }
+      case ValueKind::kSection:
+        return section(v, *key.schema(), path, v);
+      case ValueKind::kList: {
+        if (!v.IsSequence()) fail(v, path, expected());
+        if (static_cast<int>(v.size()) < key.min_items_count())
+          fail(v, path, "expected at least " + std::to_string(key.min_items_count()) + " items, found " +
+                            std::to_string(v.size()));
+        YAML::Node out(YAML::NodeType::Sequence);
+        for (size_t i = 0; i < v.size(); ++i)
+          out.push_back(section(v[i], *key.schema(), path + "[" + std::to_string(i) + "]", v[i]));
+        return out;
+      }
+    }
+    fail(v, path, expected());
+  }
+
+ private:
+  double number(const YAML::Node& v, const Key& key, const std::string& path) {
+    double x = 0;
+    if (!v.IsScalar() || !YAML::convert<double>::decode(v, x) || !std::isfinite(x))
+      fail(v, path, "expected " + key.expectation() + ", found " + scalar_text(v));
+    return x;
+  }
+
+  void check_range(const YAML::Node& v, const Key& key, const std::string& path, double x) {
+    const bool low = key.lo_open() ? !(x > key.lo()) : !(x >= key.lo());
+    const bool high = key.hi_open() ? !(x < key.hi()) : !(x <= key.hi());
+    if (low || high) fail(v, path, "expected " + key.expectation() + ", found " + scalar_text(v));
+  }
+
+  std::string where(const YAML::Node& node, const std::string& path) const {
+    for (const auto& [opath, text] : origin_.overrides) {
+      if (path == opath || path.rfind(opath + ".", 0) == 0 || path.rfind(opath + "[", 0) == 0)
+        return "--set " + opath + "=" + text;
+    }
+    std::ostringstream os;
+    os << (origin_.file.empty() ? "<scene>" : origin_.file);
+    if (node.IsDefined() && !node.Mark().is_null()) os << ":" << node.Mark().line + 1 << ":" << node.Mark().column + 1;
+    return os.str();
+  }
+
+  [[noreturn]] void fail(const YAML::Node& node, const std::string& path, const std::string& msg) const {
+    std::string text = msg;
+    if (msg.rfind("unknown key", 0) != 0) text = path + ": " + msg;
+    throw UserError(where(node, path) + ": " + text);
+  }
+
+  const Origin& origin_;
+};
+
+}  // namespace
+
+YAML::Node resolve(const YAML::Node& raw, const Schema& schema, const Origin& origin) {
+  Resolver r(origin);
+  return r.section(raw, schema, "", raw);
+}
+
+void apply_override(YAML::Node& raw, const std::string& assignment, Origin& origin) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == assignment.size())
+    HALFETI_USER_ERROR("--set " << assignment << ": expected key.path=value, e.g. --set fluid.spacing=0.002");
+  const std::string path = assignment.substr(0, eq);
+  const std::string text = assignment.substr(eq + 1);
+  YAML::Node value;
+  try {
+    value = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    HALFETI_USER_ERROR("--set " << assignment << ": the value is not valid YAML (" << e.msg << ")");
+  }
+  std::vector<std::string> parts;
+  std::stringstream ss(path);
+  for (std::string p; std::getline(ss, p, '.');) {
+    if (p.empty()) HALFETI_USER_ERROR("--set " << assignment << ": empty component in key path '" << path << "'");
+    parts.push_back(p);
+  }
+  if (!raw.IsDefined() || raw.IsNull()) raw = YAML::Node(YAML::NodeType::Map);
+  // yaml-cpp nodes are handles: walking with operator= would rebind, so keep the chain and assign at the end.
+  std::vector<YAML::Node> chain{raw};
+  std::string display;
+  for (size_t i = 0; i + 1 < parts.size(); ++i) {
+    YAML::Node cur = chain.back();
+    const std::string& p = parts[i];
+    display = display.empty() ? p : display + "." + p;
+    if (cur.IsSequence()) {
+      size_t idx = 0;
+      try {
+        idx = std::stoul(p);
+      } catch (...) {
+        HALFETI_USER_ERROR("--set " << assignment << ": '" << display << "' is a list; use an index, e.g. "
+                                    << display.substr(0, display.size() - p.size()) << "0");
+      }
+      if (idx >= cur.size())
+        HALFETI_USER_ERROR("--set " << assignment << ": list index " << idx << " out of range (the list has "
+                                    << cur.size() << " items)");
+      chain.push_back(cur[idx]);
+    } else {
+      if (cur.IsScalar())
+        HALFETI_USER_ERROR("--set " << assignment << ": '" << display << "' holds a value, not a section");
+      YAML::Node next = cur[p];
+      if (!next.IsDefined() || next.IsNull()) {
+        cur[p] = YAML::Node(YAML::NodeType::Map);
+        next = cur[p];
+      }
+      chain.push_back(next);
+    }
+  }
+  YAML::Node last = chain.back();
+  if (last.IsSequence()) {
+    size_t idx = 0;
+    try {
+      idx = std::stoul(parts.back());
+    } catch (...) {
+      HALFETI_USER_ERROR("--set " << assignment << ": '" << path << "' indexes a list with a non-number");
+    }
+    if (idx >= last.size()) HALFETI_USER_ERROR("--set " << assignment << ": list index " << idx << " out of range");
+    last[idx] = value;
+  } else {
+    last[parts.back()] = value;
+  }
+  // Messages name the override with the path as the resolver spells it (list items as name[i]).
+  std::string canonical;
+  for (const auto& p : parts) {
+    const bool index = !p.empty() && std::all_of(p.begin(), p.end(), ::isdigit);
+    canonical = canonical.empty() ? p : (index ? canonical + "[" + p + "]" : canonical + "." + p);
+  }
+  origin.overrides[canonical] = text;
+}
+
+}  // namespace halfeti::scene
