@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 #include "halfeti/core/error.hpp"
@@ -59,10 +61,13 @@ Key& Key::always() {
   return *this;
 }
 Key& Key::def(double v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  default_ = os.str();
+  // The shortest text that reads back to the same double, so resolved scenes show 0.005, not 0.0050000000000000001.
+  char buf[40];
+  for (int precision = 6; precision <= 17; ++precision) {
+    std::snprintf(buf, sizeof buf, "%.*g", precision, v);
+    if (std::strtod(buf, nullptr) == v) break;
+  }
+  default_ = buf;
   return *this;
 }
 Key& Key::def(int v) {

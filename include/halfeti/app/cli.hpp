@@ -1,0 +1,26 @@
+// The command line of `halfeti`.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace halfeti::app {
+
+struct Command {
+  enum class Kind { kRun, kCheck, kHelp, kVersion, kReference, kCable };
+  Kind kind = Kind::kHelp;
+  std::string scene;                     // run, check
+  std::vector<std::string> overrides;    // --set key.path=value
+  std::string out_dir;                   // --out (default out/<scene name>)
+  std::string restart;                   // --restart FILE
+  std::vector<std::string> petsc_args;   // after --
+  std::vector<std::string> tool_args;    // cable: everything after the word
+};
+
+// Parses argv (without the program name); throws UserError for a malformed command line.
+Command parse_command_line(const std::vector<std::string>& args);
+
+std::string usage_text();
+std::string version_text();
+
+}  // namespace halfeti::app

@@ -1,0 +1,68 @@
+// Field output: parallel HDF5, one file per output time, each rank writing its slab at an offset from a collective
+// scan, plus one XDMF file per series that ParaView opens as a time series (Cabana's HDF5ParticleOutput idea).
+// The reader opens the same files, so every writer has a round-trip test.
+#pragma once
+
+#include <mpi.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace halfeti::io {
+
+struct PointField {
+  std::string name;
+  const double* values;  // one per local point
+};
+
+// Cells of a mesh series: `nodes_per_cell` global point indices per local cell, XDMF topology name
+// ("Quadrilateral", "Quadrilateral_9", "Polyline", ...).
+struct CellBlock {
+  std::string xdmf_topology;
+  int nodes_per_cell = 0;
+  const std::int64_t* connectivity = nullptr;  // n_local_cells * nodes_per_cell global point indices
+  std::size_t n_local_cells = 0;
+};
+
+class FieldSeries {
+ public:
+  // Collective over `comm`. Files go to `dir/<name>_NNNNNN.h5`, the series to `dir/<name>.xdmf`.
+  FieldSeries(MPI_Comm comm, std::string dir, std::string name);
+
+  // Collective: every rank passes its local points (possibly none). Without cells the points are a cloud
+  // (Polyvertex). Returns the path of the file written.
+  std::string write(double time, std::size_t n_local, const double* x, const double* y,
+                    const std::vector<PointField>& fields, const CellBlock* cells = nullptr);
+
+  int frames() const { return static_cast<int>(frames_.size()); }
+  const std::string& xdmf_path() const { return xdmf_path_; }
+
+ private:
+  struct Frame {
+    double time;
+    std::string file;  // relative to dir
+    long long n_points, n_cells;
+    std::vector<std::string> fields;
+    std::string topology;
+    int nodes_per_cell;
+  };
+  void write_xdmf() const;
+
+  MPI_Comm comm_;
+  std::string dir_, name_, xdmf_path_;
+  std::vector<Frame> frames_;
+};
+
+// A whole frame read back (serially, any rank).
+struct FieldFrameData {
+  double time = 0.0;
+  std::vector<std::string> names;                 // point fields, without x and y
+  std::vector<double> x, y;
+  std::vector<std::vector<double>> values;        // aligned with names
+  std::vector<std::int64_t> cells;                // empty for point clouds
+  const std::vector<double>& field(const std::string& name) const;
+};
+FieldFrameData read_field_file(const std::string& path);
+
+}  // namespace halfeti::io

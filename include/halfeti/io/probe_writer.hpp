@@ -1,0 +1,35 @@
+// probes.csv: a `t` column, then one column per probe, named as in the scene. Rank 0 writes; values are passed in
+// already reduced (probes are collective). Rows are flushed so that a run that stops leaves a readable file.
+#pragma once
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace halfeti::io {
+
+class ProbeWriter {
+ public:
+  // Opens `path` and writes the header when `writer` is true (rank 0); other ranks hold a closed writer.
+  ProbeWriter(const std::string& path, const std::vector<std::string>& names, bool writer);
+  ~ProbeWriter();
+  ProbeWriter(const ProbeWriter&) = delete;
+  ProbeWriter& operator=(const ProbeWriter&) = delete;
+
+  void write(double t, const std::vector<double>& values);
+  size_t columns() const { return names_.size(); }
+
+ private:
+  std::FILE* file_ = nullptr;
+  std::vector<std::string> names_;
+};
+
+// Reads a probes.csv back (for tests and tools): column names and rows.
+struct ProbeTable {
+  std::vector<std::string> names;  // including "t"
+  std::vector<std::vector<double>> rows;
+  std::vector<double> column(const std::string& name) const;
+};
+ProbeTable read_probe_csv(const std::string& path);
+
+}  // namespace halfeti::io

@@ -1,0 +1,70 @@
+// Neighbour pairs of the owned fluid particles, in canonical order (global cell order, then global id) so that
+// every per-particle sum is done in the same order whatever the rank count. Rebuilt every step from the particles
+// binned in the cell grid (owned + ghosts). Each pair stores what the physics needs: the separation
+// r_ji = r_j - r_i, its length, W and F = W'(r)/r, so that grad_i W_ij = -F r_ji.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "halfeti/parallel/cell_grid.hpp"
+#include "halfeti/sph/kernel.hpp"
+
+namespace halfeti::sph {
+
+// A segment that neighbour pairs may not cross (internal walls, later the structure's surface).
+struct Barrier {
+  double xa, ya, xb, yb;
+};
+
+struct PairList {
+  std::vector<int> start;  // pairs of owned particle i are [start[i], start[i+1])
+  std::vector<int> j;
+  std::vector<double> ex, ey, r, w, f;
+  void clear() {
+    j.clear(); ex.clear(); ey.clear(); r.clear(); w.clear(); f.clear();
+  }
+  void push(int jj, double dx, double dy, double rr, const Kernel& k) {
+    j.push_back(jj); ex.push_back(dx); ey.push_back(dy); r.push_back(rr);
+    w.push_back(k.value(rr)); f.push_back(k.derivative(rr) / rr);
+  }
+  std::size_t size() const { return j.size(); }
+};
+
+// Drives a per-pair functor over the neighbours of particle i: fn(j, pair index). Physics never walks cells.
+template <class Fn>
+inline void for_each_neighbour(const PairList& pairs, int i, Fn&& fn) {
+  for (int k = pairs.start[i]; k < pairs.start[i + 1]; ++k) fn(pairs.j[k], k);
+}
+
+class NeighbourSearch {
+ public:
+  NeighbourSearch(const parallel::CellGrid& grid, const Kernel& kernel) : grid_(grid), kernel_(kernel) {}
+
+  // Binds fixed points (wall particles), searched by wall_pairs(); their index order is canonical.
+  void set_walls(const std::vector<double>& wx, const std::vector<double>& wy);
+  void set_barriers(std::vector<Barrier> barriers) { barriers_ = std::move(barriers); }
+  const std::vector<Barrier>& barriers() const { return barriers_; }
+
+  // Fluid pairs for owned particles [0, n_owned) among all local particles [0, n_local).
+  void fluid_pairs(const double* x, const double* y, const std::int64_t* gid, int n_owned, int n_local,
+                   PairList& out);
+  // Wall particles within the support of each owned particle.
+  void wall_pairs(const double* x, const double* y, int n_owned, PairList& out) const;
+
+  // Minimum pair distance found by the last fluid_pairs() (for the spacing-collapse monitor).
+  double min_distance() const { return min_distance_; }
+
+ private:
+  bool crosses_barrier(double xi, double yi, double xj, double yj) const;
+
+  parallel::CellGrid grid_;
+  Kernel kernel_;
+  std::vector<int> cell_start_, cell_items_, cell_of_;  // local particles binned by cell, then gid
+  std::vector<int> wall_start_, wall_items_;
+  std::vector<double> wx_, wy_;
+  std::vector<Barrier> barriers_;
+  double min_distance_ = 0.0;
+};
+
+}  // namespace halfeti::sph

@@ -1,0 +1,75 @@
+// Parameters of the fluid part as plain structs (the application maps scene keys onto them). SI units.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "halfeti/sph/kernel.hpp"
+
+namespace halfeti::sph {
+
+enum class Scheme { kDeltaSph, kStandard };  // standard = no density diffusion (delta term off)
+
+// A rectangle filled with still water on a square lattice of spacing dx; its top is the free surface used for the
+// hydrostatic initial density. `surface_amplitude` != 0 shapes the top as y1 + A cos(pi (x - x0_tank) / L)
+// (the first sloshing mode of the tank).
+struct WaterBlock {
+  double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;
+  double surface_amplitude = 0.0;
+};
+
+// A rigid internal wall: a line of repulsive particles between two end points that pushes on both sides; fluid
+// pairs across it do not interact.
+struct InternalWall {
+  double xa = 0.0, ya = 0.0, xb = 0.0, yb = 0.0;
+};
+
+struct FluidParams {
+  // Geometry: tank [0, tank_length] x [0, tank_height]; walls at x = 0, x = L, y = 0 and optionally y = H.
+  double tank_length = 0.30;
+  double tank_height = 0.40;
+  bool lid = false;
+  std::vector<WaterBlock> water;
+  std::vector<InternalWall> internal_walls;
+
+  // Discretisation
+  double spacing = 0.0015;                   // dx [m]
+  double h_over_dx = 1.33;                   // h = 1.33 dx, support 2h
+  KernelKind kernel = KernelKind::kCubicSpline;
+  double wall_spacing_ratio = 0.5;           // boundary particle spacing / dx
+
+  // Fluid
+  double density = 1000.0;                   // rho0 [kg/m^3]
+  double sound_speed = 0.0;                  // c0 [m/s]; 0 = eq. 10 from depth and the peak body force
+  double max_density_variation = 0.01;       // drho/rho0 for eq. 10 and the health warning
+  double gravity = 9.81;                     // [m/s^2], acts towards -y
+  double peak_ground_acceleration = 0.0;     // [m/s^2], only for the automatic c0
+
+  // delta-SPH
+  Scheme scheme = Scheme::kDeltaSph;
+  double delta = 0.1;                        // density diffusion (eq. 3)
+  double alpha = 0.02;                       // artificial viscosity (eq. 4, 8)
+  double xsph = 0.05;                        // XSPH epsilon (eq. 11); 0 turns it off
+  bool tensile_correction = true;            // Monaghan (2000)
+  double tensile_epsilon_negative = 0.2;
+  double tensile_epsilon_positive = 0.01;
+
+  // Walls (Monaghan & Kos 1999 plus the wall's pressure, see docs/sph.md)
+  double wall_repulsion = 0.01;              // A = wall_repulsion * c0^2 / h
+  bool wall_pressure = true;                 // boundary integral of the kernel-truncated pressure
+
+  // Time step
+  double cfl = 0.2;
+  double max_dt = 1.0e-3;                    // [s]
+  double min_dt = 1.0e-9;                    // [s]; below it the run stops (health)
+
+  // Distribution
+  double rebalance_threshold = 1.15;         // rebalance when max/mean particles per rank exceeds it
+  int rebalance_interval = 50;               // steps between imbalance checks
+
+  // Health
+  bool density_variation_fatal = false;
+  double spacing_collapse_fraction = 0.25;   // warn when a pair comes closer than this * dx
+};
+
+}  // namespace halfeti::sph

@@ -1,0 +1,28 @@
+// Tank walls and rigid internal walls as lines of boundary particles with normals, fixed in the tank's frame
+// (Monaghan & Kos 1999). Each particle carries a quadrature weight (its share of the wall line inside the tank)
+// for the wall-pressure term.
+#pragma once
+
+#include <vector>
+
+#include "halfeti/sph/params.hpp"
+
+namespace halfeti::sph {
+
+struct WallParticles {
+  std::vector<double> x, y, nx, ny;  // position and unit normal pointing into the fluid
+  std::vector<double> weight;        // length of wall it stands for, 0 on extensions past the corners
+  std::vector<char> two_sided;       // internal walls push on both sides
+  std::vector<double> spacing;       // boundary particle spacing of its line (Delta b)
+  std::size_t size() const { return x.size(); }
+};
+
+// Builds the tank walls (x = 0, x = L, y = 0, lid y = H if asked) and the internal walls. Tank walls extend
+// `extension` past the corners so that the repulsion stays a partition of unity there.
+WallParticles build_walls(const FluidParams& p, double extension);
+
+// Monaghan & Kos (1999) repulsion magnitude per unit mass at normal distance psi and tangential offset xi from a
+// boundary particle of spacing db: A (1 - q) / sqrt(q) * P(xi), q = psi / 2h, P(xi) = (1 + cos(pi xi / db)) / 2.
+double monaghan_kos_repulsion(double psi, double xi, double db, double two_h, double amplitude);
+
+}  // namespace halfeti::sph

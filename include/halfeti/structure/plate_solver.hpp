@@ -1,0 +1,174 @@
+// The rubber plate in time: Newmark time integration with Newton iterations on PETSc (the global assembly layer).
+//
+// Sign convention of one Newton iteration (eq. 21 without the contact rows):
+//   K_eff du = r,   K_eff = K_solid + K_nodal + c0 M,   r = R - F - M a,
+// with R the external loads at t + dt, F the internal forces (solid elements and NodalElements such as cables),
+// a the Newmark acceleration of the current iterate and c0 = 1 / (beta dt^2). The clamped base rows are identity
+// with a zero right-hand side. The coupling adds its contact rows and columns to this system: it either adds to
+// the owned matrix through add_newton_system() into a larger matrix of its own, then hands the displacement part
+// of the solution back to apply_increment().
+//
+//   solver.begin_step(t, dt);
+//   do { solver.assemble_newton_system(); ... add contact ...; solve; solver.apply_increment(du); }
+//   while (!solver.converged());
+//   solver.end_step();
+//
+// step(t, dt) is exactly that loop with the plate alone. The structure runs on its own communicator; this version
+// runs on one rank and refuses more (UserError).
+#pragma once
+
+#include <Eigen/Dense>
+#include <mpi.h>
+#include <petscksp.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "halfeti/core/communicator.hpp"
+#include "halfeti/core/nodal_element.hpp"
+#include "halfeti/core/timers.hpp"
+#include "halfeti/excitation/ground_motion.hpp"
+#include "halfeti/structure/material.hpp"
+#include "halfeti/structure/petsc_owner.hpp"
+#include "halfeti/structure/plate_mesh.hpp"
+#include "halfeti/structure/q9_element.hpp"
+
+namespace halfeti::structure {
+
+struct PlateMaterialParameters {
+  MaterialModel model = MaterialModel::kNeoHookean;
+  double youngs_modulus = 10.0e6;  // Pa, > 0 (paper: 10 MPa)
+  double poisson_ratio = 0.45;     // (-1, 0.5); rubber 0.45-0.49 (not stated by the paper)
+  double density = 1150.0;         // kg/m^3, > 0 (not stated by the paper; natural rubber 1100-1200)
+  PlaneHypothesis hypothesis = PlaneHypothesis::kPlaneStrain;
+  bool selective_reduced_integration = true;  // 2x2 Gauss on the lambda part (plane strain), see q9_element.hpp
+};
+
+struct NewmarkParameters {
+  double beta = 0.25;   // (0, 0.5]; 1/4 with gamma 1/2 is the trapezoidal rule (energy-conserving, 2nd order)
+  double gamma = 0.5;   // [0.5, 1]; > 0.5 adds numerical damping
+};
+
+struct NewtonParameters {
+  int max_iterations = 25;        // >= 1
+  double residual_rtol = 1e-8;    // ||r|| / ||r_first|| of the step, (0, 1)
+  double residual_atol = 1e-12;   // N/m, >= 0
+  double increment_rtol = 1e-10;  // ||du||_inf / plate height, > 0
+};
+
+struct StructureParameters {
+  PlateGeometry geometry;
+  PlateMaterialParameters material;
+  NewmarkParameters newmark;
+  NewtonParameters newton;
+  Eigen::Vector2d gravity{0.0, -9.81};  // m/s^2, tank frame
+};
+
+void validate(const StructureParameters& p);  // UserError naming the parameter and its range
+
+struct StepReport {
+  int newton_iterations = 0;
+  double residual_norm = 0.0;  // N/m, at the last assembly
+  double increment_norm = 0.0; // m, inf-norm of the last increment
+};
+
+class PlateSolver {
+ public:
+  // comm: the structure's communicator (duplicated). ground may be null (no tank motion); it must outlive this.
+  PlateSolver(MPI_Comm comm, const StructureParameters& params, const excitation::GroundMotion* ground = nullptr);
+  ~PlateSolver();
+  PlateSolver(const PlateSolver&) = delete;
+  PlateSolver& operator=(const PlateSolver&) = delete;
+
+  const PlateMesh& mesh() const { return mesh_; }
+  const StructureParameters& parameters() const { return params_; }
+  int node_count() const { return static_cast<int>(mesh_.nodes.size()); }
+  int dof_count() const { return 2 * node_count(); }
+  static int dof(int node, int component) { return 2 * node + component; }
+  bool is_clamped(int node) const { return clamped_[node]; }
+
+  // ---- loads (R of eq. 21), all per unit depth ----
+  void add_nodal_element(NodalElement* element);  // not owned; its force/tangent enter every Newton iteration
+  void add_point_load(int node, const Eigen::Vector2d& force);                     // N/m, dead load
+  void add_edge_load(const std::string& edge_set, const Eigen::Vector2d& traction);  // Pa, dead load on "top"...
+  void clear_loads();                 // point and edge loads
+  void set_load_factor(double factor) { load_factor_ = factor; }  // scales point and edge loads
+  // Nodal forces [N/m], 2 per node, set by the caller before each step (contact / fluid forces).
+  Eigen::VectorXd& external_forces() { return external_forces_; }
+
+  // ---- state ----
+  void set_state(const Eigen::VectorXd& displacement, const Eigen::VectorXd& velocity);
+  void initialise_acceleration(double t);  // solves M a0 = R(t) - F(u0)
+  const Eigen::VectorXd& displacement() const { return u_; }
+  const Eigen::VectorXd& velocity() const { return v_; }
+  const Eigen::VectorXd& acceleration() const { return a_; }
+
+  // ---- whole steps ----
+  StepReport step(double t, double dt);                   // Newmark from t to t + dt
+  StepReport solve_static(double t, int load_increments);  // equilibrium, loads ramped 1/n ... n/n
+
+  // ---- one Newton iteration in public pieces (for the contact coupling, eq. 21) ----
+  void begin_step(double t, double dt);  // dynamic: predictor, loads at t + dt
+  void begin_static(double t);           // no inertia
+  void assemble_newton_system();         // into newton_matrix() / newton_residual()
+  // Adds K_eff and r at rows/columns offset.. offset + dof_count() - 1 of a caller's matrix and vector (ADD_VALUES,
+  // no MatAssembly). Clamped rows get 1 on the diagonal. Preallocate with node_adjacency().
+  void add_newton_system(Mat matrix, Vec rhs, PetscInt offset);
+  Mat newton_matrix() const { return matrix_.get(); }
+  Vec newton_residual() const { return rhs_.get(); }
+  double residual_norm() const { return residual_norm_; }
+  Vec solve_newton_increment();             // KSP on the owned system; throws NumericalError on failure
+  void apply_increment(const double* du);   // dof_count() entries; clamped entries ignored
+  void apply_increment(Vec du, PetscInt offset = 0);
+  bool converged() const;
+  void end_step();                          // commits u, v, a of t + dt
+  // Nodes coupled to each node (itself included) by solid and nodal elements.
+  std::vector<std::vector<int>> node_adjacency() const;
+
+  // ---- probes ----
+  Eigen::Vector2d displacement(int node) const { return u_.segment<2>(2 * node); }
+  Eigen::Vector2d position(int node) const { return mesh_.nodes[node] + displacement(node); }
+  Eigen::Vector2d velocity(int node) const { return v_.segment<2>(2 * node); }
+  double strain_energy() const;   // J/m, solid elements
+  double kinetic_energy() const;  // J/m, 1/2 v^T M v
+  double element_von_mises(int element) const;  // Pa, mean over the element's 3x3 points (Cauchy)
+  double max_von_mises() const;                 // Pa, max over all points
+  PhaseTimers& timers() { return timers_; }
+  const StepReport& last_step() const { return last_; }
+
+ private:
+  enum class Mode { kDynamic, kStatic, kInitialAcceleration };
+  void build_matrix();
+  void compute_external(double t);
+  void assemble_local(Mode mode);  // residual_ and element matrices into matrix_ via add_newton_system
+  Q9Coordinates current(int e) const;
+  void update_acceleration();
+
+  Communicator comm_;
+  StructureParameters params_;
+  const excitation::GroundMotion* ground_;
+  PlateMesh mesh_;
+  std::unique_ptr<Material> material_;
+  std::unique_ptr<HyperelasticQ9> integrator_;
+  std::vector<Q9Geometry> geometry_;
+  std::vector<Eigen::Matrix<double, kQ9Nodes, kQ9Nodes>> mass_;  // scalar consistent mass per element
+  Eigen::VectorXd mass_row_sum_;                                 // per node, for body forces
+  std::vector<bool> clamped_;
+  std::vector<NodalElement*> nodal_elements_;
+
+  Eigen::VectorXd prescribed_loads_, external_forces_, body_forces_, residual_;
+  Eigen::VectorXd u_, v_, a_, u_n_, v_n_, a_n_;
+  Mode mode_ = Mode::kStatic;
+  double dt_ = 0.0, load_factor_ = 1.0, ramp_ = 1.0;
+  double residual_norm_ = 0.0, first_residual_norm_ = -1.0, increment_norm_ = -1.0;
+  StepReport last_;
+
+  OwnedMat matrix_;
+  OwnedVec rhs_, solution_;
+  OwnedKsp ksp_;
+  bool matrix_dirty_ = true;
+  PhaseTimers timers_;
+};
+
+}  // namespace halfeti::structure

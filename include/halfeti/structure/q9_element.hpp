@@ -1,0 +1,83 @@
+// The biquadratic nine-node quadrilateral (Q9), total Lagrangian, per unit depth: the element integrator layer.
+//
+// Why Q9: its displacement field holds x^2, y^2 and x y terms in every element, so the exact pure-bending field
+// (u_x ~ x y, u_y ~ x^2 + nu' y^2) is in the space and a plate bent with one or two elements through its thickness
+// does not shear-lock. Near incompressibility (rubber, nu -> 0.49) the bulk (lambda) part of the energy is
+// integrated with 2x2 Gauss points and the shear (mu) part with 3x3 (selective reduced integration, Hughes 1987,
+// sec. 4.5): 4 volumetric constraints per element instead of 9, which lifts volumetric locking while the fully
+// integrated shear part keeps the element free of spurious zero-energy modes. Both parts come from one energy, so
+// the tangent stays the exact derivative of the residual (Newton converges quadratically).
+//
+// Local node numbering is tensor order: node a = i + 3 j at (xi_i, eta_j), xi_i in {-1, 0, 1}.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <vector>
+
+#include "halfeti/structure/material.hpp"
+
+namespace halfeti::structure {
+
+constexpr int kQ9Nodes = 9;
+constexpr int kQ9Dofs = 18;
+using Q9Coordinates = Eigen::Matrix<double, kQ9Nodes, 2>;  // row a = (x, y) of node a
+using Q9Vector = Eigen::Matrix<double, kQ9Dofs, 1>;        // x0 y0 x1 y1 ...
+using Q9Matrix = Eigen::Matrix<double, kQ9Dofs, kQ9Dofs>;
+
+// Reference-configuration data at one quadrature point: shape values, gradients dN/dX and weight * det J.
+struct Q9Point {
+  Eigen::Matrix<double, kQ9Nodes, 1> shape;
+  Eigen::Matrix<double, kQ9Nodes, 2> gradient;
+  double weight = 0.0;
+};
+
+// Everything an element needs from its reference geometry, computed once (total Lagrangian).
+struct Q9Geometry {
+  std::array<Q9Point, 9> full;     // 3x3 Gauss
+  std::array<Q9Point, 4> reduced;  // 2x2 Gauss (bulk part under selective reduced integration)
+  double area = 0.0;
+};
+
+struct Q9Options {
+  PlaneHypothesis hypothesis = PlaneHypothesis::kPlaneStrain;
+  bool selective_reduced_integration = true;  // applies in plane strain only
+};
+
+class HyperelasticQ9 {
+ public:
+  HyperelasticQ9(const Material& material, Q9Options options);
+
+  // Throws UserError if the reference element is inverted or degenerate.
+  static Q9Geometry reference_geometry(const Q9Coordinates& reference);
+
+  // Strain energy of the element at current positions x [J per m depth].
+  double energy(const Q9Geometry& g, const Q9Coordinates& x) const;
+  // Internal force f_int = dEnergy/dx.
+  void internal_force(const Q9Geometry& g, const Q9Coordinates& x, Q9Vector& force) const;
+  // f_int and its tangent K = df_int/dx (material + geometric stiffness).
+  void internal_force_and_tangent(const Q9Geometry& g, const Q9Coordinates& x, Q9Vector& force,
+                                  Q9Matrix& tangent) const;
+  // Consistent mass as a 9x9 scalar matrix (the same for x and y): M_ab = rho int N_a N_b dA.
+  static Eigen::Matrix<double, kQ9Nodes, kQ9Nodes> scalar_mass(const Q9Geometry& g, double density);
+  // Cauchy stress (Voigt [11, 22, 12, 33]) at each 3x3 point, for probes.
+  std::array<Eigen::Vector4d, 9> cauchy_at_points(const Q9Geometry& g, const Q9Coordinates& x) const;
+
+  const Q9Options& options() const { return options_; }
+
+ private:
+  bool split() const;
+  template <bool kTangent>
+  void accumulate(const Q9Point& p, const Q9Coordinates& x, EnergyPart part, Q9Vector& force,
+                  Q9Matrix* tangent) const;
+
+  const Material& material_;
+  Q9Options options_;
+};
+
+// Q9 shape functions and their derivatives on the reference square.
+void q9_shape(double xi, double eta, Eigen::Matrix<double, kQ9Nodes, 1>& n,
+              Eigen::Matrix<double, kQ9Nodes, 2>& dn_dxi);
+
+}  // namespace halfeti::structure

@@ -1,0 +1,90 @@
+#include "halfeti/app/cli.hpp"
+
+#include "halfeti/core/error.hpp"
+#include "halfeti/core/version.hpp"
+
+namespace halfeti::app {
+
+std::string usage_text() {
+  return R"(halfeti: submerged elastic plate, cables and sloshing water under earthquakes (delta-SPH + FE + contact)
+
+usage:
+  halfeti run SCENE.yaml [--set key.path=value ...] [--out DIR] [--restart FILE] [-- PETSc options]
+  halfeti check SCENE.yaml [--set key.path=value ...]
+  halfeti cable --from X1,Y1 --to X2,Y2 --modulus E --area A --density RHO
+                (--unstretched-length L0 | --tension-stress S) [...]   (halfeti cable --help)
+  halfeti reference        print the scene reference (Markdown)
+  halfeti --help | --version
+
+run      runs the scene; outputs go to DIR (default out/<scene.name>): probes.csv, summary.json, log.txt,
+         scene.resolved.yaml, fields/ (HDF5 + XDMF) and checkpoints/.
+check    checks the scene (keys, types, ranges, files it names) and prints the resolved scene.
+--set    overrides one key before checking, e.g. --set fluid.spacing=0.002 --set probes.0.at=[0.3,0.005]
+
+exit status: 0 success, 2 bad input (scene, file, option), 3 numerical failure, 4 internal error.
+)";
+}
+
+std::string version_text() { return std::string("halfeti ") + kVersion; }
+
+Command parse_command_line(const std::vector<std::string>& args) {
+  Command c;
+  if (args.empty()) HALFETI_USER_ERROR("no command given; try 'halfeti --help'");
+  const std::string& word = args[0];
+  if (word == "--help" || word == "-h" || word == "help") {
+    c.kind = Command::Kind::kHelp;
+    return c;
+  }
+  if (word == "--version") {
+    c.kind = Command::Kind::kVersion;
+    return c;
+  }
+  if (word == "reference") {
+    if (args.size() > 1) HALFETI_USER_ERROR("'halfeti reference' takes no arguments, found '" << args[1] << "'");
+    c.kind = Command::Kind::kReference;
+    return c;
+  }
+  if (word == "cable") {
+    c.kind = Command::Kind::kCable;
+    c.tool_args.assign(args.begin() + 1, args.end());
+    return c;
+  }
+  if (word == "run")
+    c.kind = Command::Kind::kRun;
+  else if (word == "check")
+    c.kind = Command::Kind::kCheck;
+  else
+    HALFETI_USER_ERROR("unknown command '" << word << "'; expected run, check, cable, reference, --help or --version");
+
+  for (size_t i = 1; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    const auto value = [&](const char* option) -> const std::string& {
+      if (i + 1 >= args.size()) HALFETI_USER_ERROR("option " << option << " needs a value");
+      return args[++i];
+    };
+    if (a == "--") {
+      if (c.kind != Command::Kind::kRun) HALFETI_USER_ERROR("PETSc options (after --) go with 'halfeti run'");
+      c.petsc_args.assign(args.begin() + static_cast<long>(i) + 1, args.end());
+      break;
+    } else if (a == "--set") {
+      c.overrides.push_back(value("--set"));
+    } else if (a.rfind("--set=", 0) == 0) {
+      c.overrides.push_back(a.substr(6));
+    } else if (a == "--out" && c.kind == Command::Kind::kRun) {
+      c.out_dir = value("--out");
+    } else if (a == "--restart" && c.kind == Command::Kind::kRun) {
+      c.restart = value("--restart");
+    } else if (!a.empty() && a[0] == '-') {
+      HALFETI_USER_ERROR("unknown option '" << a << "' for 'halfeti " << word << "'; try 'halfeti --help'");
+    } else if (c.scene.empty()) {
+      c.scene = a;
+    } else {
+      HALFETI_USER_ERROR("one scene per run: found '" << c.scene << "' and '" << a << "'");
+    }
+  }
+  if (c.scene.empty()) HALFETI_USER_ERROR("'halfeti " << word << "' needs a scene file, e.g. halfeti " << word
+                                                      << " inputs/validation/dambreak.yaml");
+  return c;
+}
+
+}  // namespace halfeti::app

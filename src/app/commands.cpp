@@ -1,0 +1,47 @@
+#include "halfeti/app/commands.hpp"
+
+#include <iostream>
+
+#include "halfeti/app/cli.hpp"
+#include "halfeti/app/scene_schema.hpp"
+#include "halfeti/app/simulation.hpp"
+#include "halfeti/core/error.hpp"
+#include "halfeti/core/scene.hpp"
+
+namespace halfeti::app {
+
+int execute(const std::vector<std::string>& args, MPI_Comm comm) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  const Command cmd = parse_command_line(args);
+  switch (cmd.kind) {
+    case Command::Kind::kHelp:
+      if (rank == 0) std::cout << usage_text();
+      return 0;
+    case Command::Kind::kVersion:
+      if (rank == 0) std::cout << version_text() << "\n";
+      return 0;
+    case Command::Kind::kReference:
+      if (rank == 0) std::cout << scene::reference_markdown(*scene_schema(), "halfeti scene reference");
+      return 0;
+    case Command::Kind::kCable:
+      HALFETI_USER_ERROR("'halfeti cable' is not available in this build");
+    case Command::Kind::kCheck: {
+      scene::Scene s = scene::load_scene(cmd.scene, cmd.overrides, *scene_schema(), comm);
+      Parts parts = build_parts(s, comm);
+      make_probes(s.root(), parts);
+      if (rank == 0) std::cout << "# " << cmd.scene << ": ok\n" << s.resolved_text();
+      return 0;
+    }
+    case Command::Kind::kRun: {
+      scene::Scene s = scene::load_scene(cmd.scene, cmd.overrides, *scene_schema(), comm);
+      RunOptions opts{cmd.out_dir, cmd.restart, cmd.petsc_args, true};
+      Simulation sim(comm, std::move(s), opts);
+      sim.run();
+      return 0;
+    }
+  }
+  return 0;
+}
+
+}  // namespace halfeti::app

@@ -1,0 +1,66 @@
+#include "halfeti/io/probe_writer.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "halfeti/core/error.hpp"
+
+namespace halfeti::io {
+
+ProbeWriter::ProbeWriter(const std::string& path, const std::vector<std::string>& names, bool writer) : names_(names) {
+  for (const auto& n : names)
+    HALFETI_CHECK(n.find(',') == std::string::npos && n != "t", "probe name '" << n << "' cannot be a CSV column");
+  if (!writer) return;
+  file_ = std::fopen(path.c_str(), "w");
+  if (!file_) HALFETI_USER_ERROR("cannot write probes to '" << path << "': " << std::strerror(errno));
+  std::fputs("t", file_);
+  for (const auto& n : names) std::fprintf(file_, ",%s", n.c_str());
+  std::fputc('\n', file_);
+  std::fflush(file_);
+}
+
+ProbeWriter::~ProbeWriter() {
+  if (file_) std::fclose(file_);
+}
+
+void ProbeWriter::write(double t, const std::vector<double>& values) {
+  HALFETI_CHECK(values.size() == names_.size(), "probe row has " << values.size() << " values for "
+                                                                 << names_.size() << " columns");
+  if (!file_) return;
+  std::fprintf(file_, "%.9g", t);
+  for (double v : values) std::fprintf(file_, ",%.9g", v);
+  std::fputc('\n', file_);
+  std::fflush(file_);
+}
+
+std::vector<double> ProbeTable::column(const std::string& name) const {
+  const auto it = std::find(names.begin(), names.end(), name);
+  HALFETI_CHECK(it != names.end(), "no probe column '" << name << "'");
+  const size_t j = static_cast<size_t>(it - names.begin());
+  std::vector<double> out;
+  for (const auto& r : rows) out.push_back(r.at(j));
+  return out;
+}
+
+ProbeTable read_probe_csv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) HALFETI_USER_ERROR("cannot open probe file '" << path << "'");
+  ProbeTable t;
+  std::string line;
+  if (!std::getline(in, line)) HALFETI_USER_ERROR("probe file '" << path << "' is empty");
+  std::stringstream hs(line);
+  for (std::string c; std::getline(hs, c, ',');) t.names.push_back(c);
+  while (std::getline(in, line)) {
+    std::stringstream ls(line);
+    std::vector<double> row;
+    for (std::string c; std::getline(ls, c, ',');) row.push_back(std::stod(c));
+    if (row.size() != t.names.size()) HALFETI_USER_ERROR("probe file '" << path << "': ragged row '" << line << "'");
+    t.rows.push_back(std::move(row));
+  }
+  return t;
+}
+
+}  // namespace halfeti::io

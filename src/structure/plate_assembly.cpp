@@ -1,0 +1,169 @@
+// Global assembly of the Newton system of the plate: solid elements, inertia, nodal elements (cables), loads.
+#include <algorithm>
+#include <set>
+
+#include "halfeti/core/error.hpp"
+#include "halfeti/structure/plate_solver.hpp"
+
+namespace halfeti::structure {
+
+namespace {
+using RowMajor18 = Eigen::Matrix<double, kQ9Dofs, kQ9Dofs, Eigen::RowMajor>;
+}
+
+Q9Coordinates PlateSolver::current(int e) const {
+  Q9Coordinates x;
+  for (int a = 0; a < kQ9Nodes; ++a) {
+    const int n = mesh_.elements[e][a];
+    x.row(a) = (mesh_.nodes[n] + u_.segment<2>(2 * n)).transpose();
+  }
+  return x;
+}
+
+std::vector<std::vector<int>> PlateSolver::node_adjacency() const {
+  std::vector<std::set<int>> adj(node_count());
+  auto couple = [&adj](const auto& nodes) {
+    for (int a : nodes)
+      for (int b : nodes) adj[a].insert(b);
+  };
+  for (const auto& e : mesh_.elements) couple(e);
+  for (const NodalElement* ne : nodal_elements_) couple(ne->nodes());
+  std::vector<std::vector<int>> out(node_count());
+  for (int n = 0; n < node_count(); ++n) out[n].assign(adj[n].begin(), adj[n].end());
+  return out;
+}
+
+void PlateSolver::build_matrix() {
+  // Preallocated from the mesh graph (plus nodal elements), block size 2 = dofs per node.
+  const auto adjacency = node_adjacency();
+  std::vector<PetscInt> blocks_per_row(node_count()), off_diagonal(node_count(), 0);
+  for (int n = 0; n < node_count(); ++n) blocks_per_row[n] = static_cast<PetscInt>(adjacency[n].size());
+  const PetscInt n = dof_count();
+  HALFETI_PETSC_CALL(MatCreate(comm_.get(), matrix_.out()));
+  HALFETI_PETSC_CALL(MatSetSizes(matrix_.get(), n, n, n, n));
+  HALFETI_PETSC_CALL(MatSetBlockSize(matrix_.get(), 2));
+  HALFETI_PETSC_CALL(MatSetType(matrix_.get(), MATAIJ));
+  HALFETI_PETSC_CALL(MatSetOptionsPrefix(matrix_.get(), "structure_"));
+  HALFETI_PETSC_CALL(MatSetFromOptions(matrix_.get()));
+  HALFETI_PETSC_CALL(MatXAIJSetPreallocation(matrix_.get(), 2, blocks_per_row.data(), off_diagonal.data(),
+                                             nullptr, nullptr));
+  HALFETI_PETSC_CALL(MatSetOption(matrix_.get(), MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+  HALFETI_PETSC_CALL(MatCreateVecs(matrix_.get(), solution_.out(), rhs_.out()));
+  matrix_dirty_ = false;
+}
+
+void PlateSolver::compute_external(double t) {
+  // Gravity and the tank frame's inertial force -a_g(t) (DESIGN, "The tank frame"), lumped through M's row sums:
+  // for a uniform acceleration field b, the consistent nodal force M b equals (row sum of M) b exactly.
+  Eigen::Vector2d body = params_.gravity;
+  if (ground_ != nullptr) body.x() -= ground_->acceleration(t);
+  for (int n = 0; n < node_count(); ++n) body_forces_.segment<2>(2 * n) = mass_row_sum_(n) * body;
+}
+
+void PlateSolver::update_acceleration() {
+  // Newmark: a = (u - u_n - dt v_n - dt^2 (1/2 - beta) a_n) / (beta dt^2).
+  const double beta = params_.newmark.beta;
+  a_ = (u_ - u_n_ - dt_ * v_n_ - dt_ * dt_ * (0.5 - beta) * a_n_) / (beta * dt_ * dt_);
+}
+
+void PlateSolver::add_newton_system(Mat matrix, Vec rhs, PetscInt offset) {
+  ScopedTimer timer(timers_, "structure_assembly");
+  const bool inertia_in_residual = mode_ == Mode::kDynamic;
+  const double stiffness_coefficient = mode_ == Mode::kInitialAcceleration ? 0.0 : 1.0;
+  const double mass_coefficient = mode_ == Mode::kDynamic ? 1.0 / (params_.newmark.beta * dt_ * dt_)
+                                  : mode_ == Mode::kInitialAcceleration ? 1.0
+                                                                        : 0.0;
+  if (inertia_in_residual) update_acceleration();
+  residual_ = ramp_ * (load_factor_ * prescribed_loads_ + external_forces_ + body_forces_);
+
+  PetscInt block_size = 1;
+  HALFETI_PETSC_CALL(MatGetBlockSize(matrix, &block_size));
+  const bool blocked = block_size == 2 && offset % 2 == 0;
+
+  Q9Vector force;
+  Q9Matrix tangent;
+  RowMajor18 element_matrix;
+  PetscInt rows[kQ9Dofs];
+  for (std::size_t e = 0; e < mesh_.elements.size(); ++e) {
+    const auto& nodes = mesh_.elements[e];
+    const Q9Coordinates x = current(static_cast<int>(e));
+    if (stiffness_coefficient != 0.0) {
+      integrator_->internal_force_and_tangent(geometry_[e], x, force, tangent);
+      element_matrix = tangent;
+    } else {
+      integrator_->internal_force(geometry_[e], x, force);
+      element_matrix.setZero();
+    }
+    const auto& m = mass_[e];
+    for (int a = 0; a < kQ9Nodes; ++a) {
+      Eigen::Vector2d inertia = Eigen::Vector2d::Zero();
+      for (int b = 0; b < kQ9Nodes; ++b) {
+        if (inertia_in_residual) inertia += m(a, b) * a_.segment<2>(2 * nodes[b]);
+        element_matrix(2 * a, 2 * b) += mass_coefficient * m(a, b);
+        element_matrix(2 * a + 1, 2 * b + 1) += mass_coefficient * m(a, b);
+      }
+      residual_.segment<2>(2 * nodes[a]) -= force.segment<2>(2 * a) + inertia;
+    }
+    // Negative indices make PETSc skip the clamped rows and columns.
+    if (blocked) {
+      for (int a = 0; a < kQ9Nodes; ++a) rows[a] = clamped_[nodes[a]] ? -1 : nodes[a] + offset / 2;
+      HALFETI_PETSC_CALL(MatSetValuesBlocked(matrix, kQ9Nodes, rows, kQ9Nodes, rows, element_matrix.data(),
+                                             ADD_VALUES));
+    } else {
+      for (int a = 0; a < kQ9Nodes; ++a)
+        for (int c = 0; c < 2; ++c) rows[2 * a + c] = clamped_[nodes[a]] ? -1 : 2 * nodes[a] + c + offset;
+      HALFETI_PETSC_CALL(MatSetValues(matrix, kQ9Dofs, rows, kQ9Dofs, rows, element_matrix.data(), ADD_VALUES));
+    }
+  }
+
+  // Nodal elements (cables): their force is internal (enters as F), their tangent adds to K.
+  for (NodalElement* ne : nodal_elements_) {
+    const std::vector<int> nodes = ne->nodes();
+    std::vector<Eigen::Vector2d> positions;
+    for (int n : nodes) positions.push_back(mesh_.nodes[n] + u_.segment<2>(2 * n));
+    Eigen::VectorXd ne_force;
+    Eigen::MatrixXd ne_tangent;
+    ne->evaluate(positions, ne_force, ne_tangent);
+    const int k = 2 * static_cast<int>(nodes.size());
+    HALFETI_CHECK(ne_force.size() == k && ne_tangent.rows() == k && ne_tangent.cols() == k,
+                  "nodal element returned force/tangent of the wrong size");
+    std::vector<PetscInt> idx(k);
+    for (std::size_t a = 0; a < nodes.size(); ++a) {
+      residual_.segment<2>(2 * nodes[a]) -= ne_force.segment<2>(2 * a);
+      for (int c = 0; c < 2; ++c) idx[2 * a + c] = clamped_[nodes[a]] ? -1 : 2 * nodes[a] + c + offset;
+    }
+    const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rm =
+        stiffness_coefficient * ne_tangent;
+    HALFETI_PETSC_CALL(MatSetValues(matrix, k, idx.data(), k, idx.data(), rm.data(), ADD_VALUES));
+  }
+
+  for (int n = 0; n < node_count(); ++n) {
+    if (!clamped_[n]) continue;
+    residual_.segment<2>(2 * n).setZero();
+    for (int c = 0; c < 2; ++c) {
+      const PetscInt row = 2 * n + c + offset;
+      HALFETI_PETSC_CALL(MatSetValue(matrix, row, row, 1.0, ADD_VALUES));
+    }
+  }
+  if (rhs != nullptr) {
+    std::vector<PetscInt> idx(dof_count());
+    for (int i = 0; i < dof_count(); ++i) idx[i] = i + offset;
+    HALFETI_PETSC_CALL(VecSetValues(rhs, dof_count(), idx.data(), residual_.data(), ADD_VALUES));
+  }
+  residual_norm_ = residual_.norm();
+  if (first_residual_norm_ < 0.0) first_residual_norm_ = residual_norm_;
+}
+
+void PlateSolver::assemble_newton_system() {
+  if (matrix_dirty_) build_matrix();
+  HALFETI_PETSC_CALL(MatZeroEntries(matrix_.get()));
+  HALFETI_PETSC_CALL(VecSet(rhs_.get(), 0.0));
+  add_newton_system(matrix_.get(), rhs_.get(), 0);
+  ScopedTimer timer(timers_, "structure_assembly");
+  HALFETI_PETSC_CALL(MatAssemblyBegin(matrix_.get(), MAT_FINAL_ASSEMBLY));
+  HALFETI_PETSC_CALL(MatAssemblyEnd(matrix_.get(), MAT_FINAL_ASSEMBLY));
+  HALFETI_PETSC_CALL(VecAssemblyBegin(rhs_.get()));
+  HALFETI_PETSC_CALL(VecAssemblyEnd(rhs_.get()));
+}
+
+}  // namespace halfeti::structure
