@@ -1,0 +1,267 @@
+// Newmark-Newton time stepping of the plate, its loads, state and probes. Assembly is in plate_assembly.cpp.
+#include "halfeti/structure/plate_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "halfeti/core/error.hpp"
+
+namespace halfeti::structure {
+
+void validate(const StructureParameters& p) {
+  const auto& m = p.material;
+  if (!(m.density > 0.0)) HALFETI_USER_ERROR("structure.material.density = " << m.density << " kg/m^3 must be > 0");
+  if (!(p.newmark.beta > 0.0 && p.newmark.beta <= 0.5))
+    HALFETI_USER_ERROR("structure.newmark.beta = " << p.newmark.beta << " must lie in (0, 0.5]");
+  if (!(p.newmark.gamma >= 0.5 && p.newmark.gamma <= 1.0))
+    HALFETI_USER_ERROR("structure.newmark.gamma = " << p.newmark.gamma << " must lie in [0.5, 1]");
+  if (p.newmark.beta < 0.25 * (p.newmark.gamma + 0.5) * (p.newmark.gamma + 0.5) - 1e-14)
+    HALFETI_USER_ERROR("structure.newmark: beta = " << p.newmark.beta << " < (gamma + 1/2)^2 / 4 is only "
+                       "conditionally stable; use beta >= " << 0.25 * (p.newmark.gamma + 0.5) * (p.newmark.gamma + 0.5));
+  if (p.newton.max_iterations < 1)
+    HALFETI_USER_ERROR("structure.newton.max_iterations = " << p.newton.max_iterations << " must be >= 1");
+  if (!(p.newton.residual_rtol > 0.0 && p.newton.residual_rtol < 1.0))
+    HALFETI_USER_ERROR("structure.newton.residual_rtol = " << p.newton.residual_rtol << " must lie in (0, 1)");
+  if (!(p.newton.residual_atol >= 0.0))
+    HALFETI_USER_ERROR("structure.newton.residual_atol = " << p.newton.residual_atol << " must be >= 0");
+  if (!(p.newton.increment_rtol > 0.0))
+    HALFETI_USER_ERROR("structure.newton.increment_rtol = " << p.newton.increment_rtol << " must be > 0");
+}
+
+PlateSolver::PlateSolver(MPI_Comm comm, const StructureParameters& params, const excitation::GroundMotion* ground)
+    : comm_(comm), params_(params), ground_(ground) {
+  if (comm_.size() != 1)
+    HALFETI_USER_ERROR("structure.ranks = " << comm_.size()
+                                            << ": the structure solver runs on one rank in this version; "
+                                               "set structure.ranks: 1");
+  validate(params_);
+  mesh_ = make_plate_mesh(params_.geometry);
+  const auto& m = params_.material;
+  material_ = make_material(m.model, m.youngs_modulus, m.poisson_ratio);
+  integrator_ = std::make_unique<HyperelasticQ9>(*material_, Q9Options{m.hypothesis, m.selective_reduced_integration});
+
+  const int n = node_count();
+  clamped_.assign(n, false);
+  for (int c : mesh_.clamped_nodes) clamped_[c] = true;
+  mass_row_sum_ = Eigen::VectorXd::Zero(n);
+  for (const auto& e : mesh_.elements) {
+    Q9Coordinates x;
+    for (int a = 0; a < kQ9Nodes; ++a) x.row(a) = mesh_.nodes[e[a]].transpose();
+    geometry_.push_back(HyperelasticQ9::reference_geometry(x));
+    mass_.push_back(HyperelasticQ9::scalar_mass(geometry_.back(), m.density));
+    const Eigen::Matrix<double, kQ9Nodes, 1> rows = mass_.back().rowwise().sum();
+    for (int a = 0; a < kQ9Nodes; ++a) mass_row_sum_(e[a]) += rows(a);
+  }
+  for (auto* v : {&prescribed_loads_, &external_forces_, &body_forces_, &residual_, &u_, &v_, &a_, &u_n_, &v_n_,
+                  &a_n_})
+    *v = Eigen::VectorXd::Zero(dof_count());
+
+  // Direct LU by default (small banded systems); -structure_ksp_type / -structure_pc_type override.
+  HALFETI_PETSC_CALL(KSPCreate(comm_.get(), ksp_.out()));
+  HALFETI_PETSC_CALL(KSPSetOptionsPrefix(ksp_.get(), "structure_"));
+  HALFETI_PETSC_CALL(KSPSetType(ksp_.get(), KSPPREONLY));
+  PC pc = nullptr;
+  HALFETI_PETSC_CALL(KSPGetPC(ksp_.get(), &pc));
+  HALFETI_PETSC_CALL(PCSetType(pc, PCLU));
+  HALFETI_PETSC_CALL(KSPSetFromOptions(ksp_.get()));
+}
+
+PlateSolver::~PlateSolver() = default;
+
+void PlateSolver::add_nodal_element(NodalElement* element) {
+  HALFETI_CHECK(element != nullptr, "null nodal element");
+  for (int n : element->nodes())
+    HALFETI_CHECK(n >= 0 && n < node_count(), "nodal element node " << n << " outside the plate mesh");
+  nodal_elements_.push_back(element);
+  matrix_dirty_ = true;  // its couplings change the sparsity pattern
+}
+
+void PlateSolver::add_point_load(int node, const Eigen::Vector2d& force) {
+  HALFETI_CHECK(node >= 0 && node < node_count(), "point load on node " << node << " outside the mesh");
+  prescribed_loads_.segment<2>(2 * node) += force;
+}
+
+void PlateSolver::add_edge_load(const std::string& edge_set, const Eigen::Vector2d& traction) {
+  auto it = mesh_.edge_sets.find(edge_set);
+  if (it == mesh_.edge_sets.end())
+    HALFETI_USER_ERROR("structure: no edge set '" << edge_set << "' (have left, right, top)");
+  // Uniform traction on a straight quadratic edge: consistent nodal shares 1/6, 2/3, 1/6 of t * length.
+  for (const auto& edge : it->second) {
+    const double length = (mesh_.nodes[edge[2]] - mesh_.nodes[edge[0]]).norm();
+    const double share[3] = {1.0 / 6.0, 2.0 / 3.0, 1.0 / 6.0};
+    for (int k = 0; k < 3; ++k) prescribed_loads_.segment<2>(2 * edge[k]) += share[k] * length * traction;
+  }
+}
+
+void PlateSolver::clear_loads() { prescribed_loads_.setZero(); }
+
+void PlateSolver::set_state(const Eigen::VectorXd& displacement, const Eigen::VectorXd& velocity) {
+  HALFETI_CHECK(displacement.size() == dof_count() && velocity.size() == dof_count(), "state of wrong size");
+  u_ = displacement;
+  v_ = velocity;
+  for (int n : mesh_.clamped_nodes) u_.segment<2>(2 * n).setZero(), v_.segment<2>(2 * n).setZero();
+}
+
+void PlateSolver::initialise_acceleration(double t) {
+  mode_ = Mode::kInitialAcceleration;
+  ramp_ = 1.0;
+  compute_external(t);
+  assemble_newton_system();
+  Vec a0 = solve_newton_increment();
+  const PetscScalar* values = nullptr;
+  HALFETI_PETSC_CALL(VecGetArrayRead(a0, &values));
+  for (int i = 0; i < dof_count(); ++i) a_(i) = clamped_[i / 2] ? 0.0 : values[i];
+  HALFETI_PETSC_CALL(VecRestoreArrayRead(a0, &values));
+}
+
+void PlateSolver::begin_step(double t, double dt) {
+  if (!(dt > 0.0)) HALFETI_NUMERICAL_ERROR("structure: time step " << dt << " s must be positive");
+  mode_ = Mode::kDynamic;
+  dt_ = dt;
+  ramp_ = 1.0;
+  u_n_ = u_, v_n_ = v_, a_n_ = a_;
+  u_ = u_n_ + dt * v_n_ + 0.5 * dt * dt * a_n_;  // predictor: the iterate starts with a = a_n
+  compute_external(t + dt);
+  first_residual_norm_ = -1.0;
+  increment_norm_ = -1.0;
+  last_ = StepReport{};
+}
+
+void PlateSolver::begin_static(double t) {
+  mode_ = Mode::kStatic;
+  compute_external(t);
+  first_residual_norm_ = -1.0;
+  increment_norm_ = -1.0;
+  last_ = StepReport{};
+}
+
+Vec PlateSolver::solve_newton_increment() {
+  ScopedTimer timer(timers_, "structure_solve");
+  HALFETI_PETSC_CALL(KSPSetOperators(ksp_.get(), matrix_.get(), matrix_.get()));
+  HALFETI_PETSC_CALL(KSPSolve(ksp_.get(), rhs_.get(), solution_.get()));
+  KSPConvergedReason reason;
+  HALFETI_PETSC_CALL(KSPGetConvergedReason(ksp_.get(), &reason));
+  if (reason < 0) {
+    std::string detail;
+    if (reason == KSP_DIVERGED_PC_FAILED) {
+      PC pc = nullptr;
+      PCFailedReason pc_reason;
+      HALFETI_PETSC_CALL(KSPGetPC(ksp_.get(), &pc));
+      HALFETI_PETSC_CALL(PCGetFailedReason(pc, &pc_reason));
+      detail = std::string(" (preconditioner: ") + PCFailedReasons[pc_reason] + ")";
+    }
+    HALFETI_NUMERICAL_ERROR("structure: KSP solve failed, reason " << KSPConvergedReasons[reason] << detail
+                                                                   << "; try -structure_pc_type lu");
+  }
+  return solution_.get();
+}
+
+void PlateSolver::apply_increment(const double* du) {
+  double largest = 0.0;
+  for (int i = 0; i < dof_count(); ++i) {
+    if (clamped_[i / 2]) continue;
+    u_(i) += du[i];
+    largest = std::max(largest, std::abs(du[i]));
+  }
+  if (!std::isfinite(largest)) HALFETI_NUMERICAL_ERROR("structure: Newton increment is not finite (NaN/Inf)");
+  increment_norm_ = largest;
+  last_.increment_norm = largest;
+  ++last_.newton_iterations;
+}
+
+void PlateSolver::apply_increment(Vec du, PetscInt offset) {
+  const PetscScalar* values = nullptr;
+  HALFETI_PETSC_CALL(VecGetArrayRead(du, &values));
+  apply_increment(values + offset);
+  HALFETI_PETSC_CALL(VecRestoreArrayRead(du, &values));
+}
+
+bool PlateSolver::converged() const {
+  const auto& nt = params_.newton;
+  const bool residual_small = residual_norm_ <= std::max(nt.residual_atol, nt.residual_rtol * first_residual_norm_);
+  const bool increment_small = increment_norm_ >= 0.0 && increment_norm_ <= nt.increment_rtol * params_.geometry.height;
+  return residual_small || increment_small;
+}
+
+void PlateSolver::end_step() {
+  if (mode_ == Mode::kDynamic) {
+    update_acceleration();
+    v_ = v_n_ + dt_ * ((1.0 - params_.newmark.gamma) * a_n_ + params_.newmark.gamma * a_);
+  }
+  last_.residual_norm = residual_norm_;
+}
+
+namespace {
+// The plate-alone Newton loop shared by step() and solve_static().
+template <typename Solver>
+void newton_loop(Solver& s, int max_iterations, double t, const char* what) {
+  for (;;) {
+    s.assemble_newton_system();
+    if (s.converged()) return;
+    if (s.last_step().newton_iterations >= max_iterations)
+      HALFETI_NUMERICAL_ERROR("structure: Newton did not converge in " << max_iterations << " iterations ("
+                              << what << " at t = " << t << " s): ||r|| = " << s.residual_norm()
+                              << " N/m, last ||du||_inf = " << s.last_step().increment_norm << " m");
+    s.apply_increment(s.solve_newton_increment());
+    if (s.converged()) return;
+  }
+}
+}  // namespace
+
+StepReport PlateSolver::step(double t, double dt) {
+  begin_step(t, dt);
+  newton_loop(*this, params_.newton.max_iterations, t + dt, "time step");
+  end_step();
+  return last_;
+}
+
+StepReport PlateSolver::solve_static(double t, int load_increments) {
+  if (load_increments < 1) HALFETI_USER_ERROR("structure: load_increments " << load_increments << " must be >= 1");
+  StepReport total;
+  for (int k = 1; k <= load_increments; ++k) {
+    begin_static(t);
+    ramp_ = double(k) / load_increments;
+    newton_loop(*this, params_.newton.max_iterations, t, "static solve");
+    end_step();
+    total.newton_iterations += last_.newton_iterations;
+  }
+  ramp_ = 1.0;
+  total.residual_norm = last_.residual_norm;
+  total.increment_norm = last_.increment_norm;
+  return total;
+}
+
+double PlateSolver::strain_energy() const {
+  double e = 0.0;
+  for (std::size_t k = 0; k < mesh_.elements.size(); ++k)
+    e += integrator_->energy(geometry_[k], current(static_cast<int>(k)));
+  return e;
+}
+
+double PlateSolver::kinetic_energy() const {
+  double e = 0.0;
+  for (std::size_t k = 0; k < mesh_.elements.size(); ++k) {
+    const auto& nodes = mesh_.elements[k];
+    for (int a = 0; a < kQ9Nodes; ++a)
+      for (int b = 0; b < kQ9Nodes; ++b)
+        e += 0.5 * mass_[k](a, b) * v_.segment<2>(2 * nodes[a]).dot(v_.segment<2>(2 * nodes[b]));
+  }
+  return e;
+}
+
+double PlateSolver::element_von_mises(int element) const {
+  HALFETI_CHECK(element >= 0 && element < static_cast<int>(mesh_.elements.size()), "no element " << element);
+  double sum = 0.0;
+  for (const auto& s : integrator_->cauchy_at_points(geometry_[element], current(element))) sum += von_mises(s);
+  return sum / 9.0;
+}
+
+double PlateSolver::max_von_mises() const {
+  double m = 0.0;
+  for (std::size_t k = 0; k < mesh_.elements.size(); ++k)
+    for (const auto& s : integrator_->cauchy_at_points(geometry_[k], current(static_cast<int>(k))))
+      m = std::max(m, von_mises(s));
+  return m;
+}
+
+}  // namespace halfeti::structure
