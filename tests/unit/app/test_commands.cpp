@@ -1,0 +1,111 @@
+// The program's commands end to end: exit statuses, --set, outputs of a run, the probe registry.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+
+#include "halfeti/app/cli.hpp"
+#include "halfeti/app/probes.hpp"
+#include "halfeti/app/scene_schema.hpp"
+#include "halfeti/core/error.hpp"
+#include "halfeti/io/probe_writer.hpp"
+
+using namespace halfeti;
+
+namespace {
+
+const std::string kBin = std::string(HALFETI_BINARY_DIR) + "/src/app/halfeti";
+const std::string kDir = std::string(HALFETI_BINARY_DIR) + "/app_commands";
+
+int status_of(const std::string& args) {
+  const int raw = std::system((kBin + " " + args + " >" + kDir + "/out.txt 2>" + kDir + "/err.txt").c_str());
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+
+std::string file_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string write_scene(const std::string& name, const std::string& text) {
+  std::system(("mkdir -p " + kDir).c_str());
+  const std::string path = kDir + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+const char* kPulseScene =
+    "scene: {name: pulse, end_time: 0.5}\n"
+    "output: {probe_interval: 0.01}\n"
+    "excitation: {kind: cosine_pulse, amplitude: 3.0, period: 0.4, start: 0.05}\n"
+    "probes:\n  - {name: ag, kind: ground_acceleration}\n";
+
+}  // namespace
+
+TEST(Commands, ExitStatuses) {
+  const std::string scene = write_scene("pulse.yaml", kPulseScene);
+  EXPECT_EQ(status_of("--help"), 0);
+  EXPECT_EQ(status_of("--version"), 0);
+  EXPECT_NE(file_text(kDir + "/out.txt").find("halfeti 0."), std::string::npos);
+  EXPECT_EQ(status_of("check " + scene), 0);
+  EXPECT_EQ(status_of(""), 2);
+  EXPECT_EQ(status_of("frobnicate"), 2);
+  EXPECT_EQ(status_of("run"), 2);
+  EXPECT_EQ(status_of("run " + scene + " --bogus"), 2);
+  EXPECT_EQ(status_of("check " + kDir + "/no_such_scene.yaml"), 2);
+  EXPECT_EQ(file_text(kDir + "/err.txt"),
+            "halfeti: error: cannot open scene file '" + kDir + "/no_such_scene.yaml': no such file or not readable\n");
+  EXPECT_EQ(status_of("check " + scene + " --set excitation.period=-1"), 2);
+  EXPECT_EQ(status_of("run " + scene + " --out /proc/forbidden/out"), 2);
+  const std::string bad_record = write_scene(
+      "record.yaml", "scene: {name: r, end_time: 1}\nexcitation: {kind: record, file: missing.csv}\n");
+  EXPECT_EQ(status_of("check " + bad_record), 2);
+  EXPECT_NE(file_text(kDir + "/err.txt").find("cannot open accelerogram"), std::string::npos);
+}
+
+TEST(Commands, RunWritesProbesSummaryLogAndResolvedScene) {
+  const std::string scene = write_scene("pulse.yaml", kPulseScene);
+  const std::string out = kDir + "/pulse_out";
+  ASSERT_EQ(status_of("run " + scene + " --out " + out + " --set excitation.amplitude=2.0"), 0);
+  const auto probes = io::read_probe_csv(out + "/probes.csv");
+  ASSERT_EQ(probes.names, (std::vector<std::string>{"t", "ag"}));
+  ASSERT_EQ(probes.rows.size(), 51u);  // t = 0, 0.01, ..., 0.5
+  EXPECT_NEAR(probes.column("t").back(), 0.5, 1e-12);
+  EXPECT_NEAR(probes.column("ag")[5], 2.0, 1e-9);  // the override took effect: cosine peak at the start, 0.05 s
+  EXPECT_EQ(probes.column("ag")[0], 0.0);
+  const std::string summary = file_text(out + "/summary.json");
+  for (const char* key : {"\"scene\": \"pulse\"", "\"ranks\": 1", "\"steps\": 50", "\"simulated_time\": 0.5",
+                          "\"exit_status\": \"ok\"", "\"timers\"", "\"health_events\"", "\"wall_time\""})
+    EXPECT_NE(summary.find(key), std::string::npos) << key;
+  EXPECT_NE(file_text(out + "/log.txt").find("done:"), std::string::npos);
+  // The resolved scene runs again as it is and records the override.
+  const std::string resolved = file_text(out + "/scene.resolved.yaml");
+  EXPECT_NE(resolved.find("amplitude: 2.0"), std::string::npos);
+  EXPECT_EQ(status_of("check " + out + "/scene.resolved.yaml"), 0);
+}
+
+TEST(Commands, CommandLineParsing) {
+  const auto c = app::parse_command_line({"run", "a.yaml", "--set", "x.y=1", "--set=z=2", "--out", "o", "--",
+                                          "-structure_ksp_type", "gmres"});
+  EXPECT_EQ(c.kind, app::Command::Kind::kRun);
+  EXPECT_EQ(c.scene, "a.yaml");
+  EXPECT_EQ(c.overrides, (std::vector<std::string>{"x.y=1", "z=2"}));
+  EXPECT_EQ(c.out_dir, "o");
+  EXPECT_EQ(c.petsc_args, (std::vector<std::string>{"-structure_ksp_type", "gmres"}));
+  EXPECT_THROW(app::parse_command_line({"check", "a.yaml", "b.yaml"}), UserError);
+  EXPECT_THROW(app::parse_command_line({"check", "a.yaml", "--out", "o"}), UserError);
+  EXPECT_THROW(app::parse_command_line({"run", "a.yaml", "--set"}), UserError);
+}
+
+TEST(Commands, ProbeKindsComeFromTheRegistry) {
+  const auto& names = app::probe_registry().names();
+  const auto schema = app::probe_schema();
+  const auto* kind = schema->find("kind");
+  ASSERT_NE(kind, nullptr);
+  EXPECT_EQ(kind->choices(), names);
+  for (const auto& n : names) EXPECT_EQ(schema->variants().count(n), 1u) << n;
+}

@@ -1,0 +1,92 @@
+// The table of malformed scenes: each must be answered by `halfeti check` with one line naming file, line, key,
+// what was found and what was expected (exit status 2).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sys/wait.h>
+
+#include "halfeti/app/scene_schema.hpp"
+#include "halfeti/core/error.hpp"
+#include "halfeti/core/scene.hpp"
+
+using namespace halfeti;
+
+namespace {
+
+struct Case {
+  const char* what;
+  const char* text;
+  const char* message;  // the whole error line
+};
+
+const char* kGood = "scene: {name: s, end_time: 1}\n";
+
+const Case kCases[] = {
+    {"missing section", "output: {probe_interval: 0.01}\n", "bad.yaml:1:1: scene: required key missing: expected a section (key: value lines)"},
+    {"negative end time", "scene: {name: s, end_time: -2}\n",
+     "bad.yaml:1:28: scene.end_time: expected a number > 0 and <= 10000 (s), found '-2'"},
+    {"text for a number", "scene: {name: s, end_time: soon}\n",
+     "bad.yaml:1:28: scene.end_time: expected a number > 0 and <= 10000 (s), found 'soon'"},
+    {"near-miss key", "scene: {name: s, end_tme: 1}\n", "bad.yaml:1:18: unknown key 'scene.end_tme'; did you mean 'end_time'?"},
+    {"unknown section", "scene: {name: s, end_time: 1}\nfluids: {}\n",
+     "bad.yaml:2:1: unknown key 'fluids'; expected one of: scene, output, gravity, tank, excitation, probes"},
+    {"unknown choice", "scene: {name: s, end_time: 1}\nexcitation: {kind: sine}\n",
+     "bad.yaml:2:20: excitation.kind: expected one of none, sine_pulse, cosine_pulse, record, found 'sine'; did you mean 'none'?"},
+    {"pulse without period", "scene: {name: s, end_time: 1}\nexcitation: {kind: sine_pulse, amplitude: 2}\n",
+     "bad.yaml:2:13: excitation.period: required key missing: expected a number > 0 and <= 100 (s)"},
+    {"key of another kind", "scene: {name: s, end_time: 1}\nexcitation: {kind: none, period: 1}\n",
+     "bad.yaml:2:26: unknown key 'excitation.period' for kind 'none'; expected one of: kind"},
+    {"negative interval", "scene: {name: s, end_time: 1}\noutput: {probe_interval: 0}\n",
+     "bad.yaml:2:26: output.probe_interval: expected a number > 0 (s), found '0'"},
+    {"probe without name", "scene: {name: s, end_time: 1}\nprobes:\n  - {kind: ground_acceleration}\n",
+     "bad.yaml:3:5: probes[0].name: required key missing: expected a string"},
+    {"probes not a list", "scene: {name: s, end_time: 1}\nprobes: {name: a}\n",
+     "bad.yaml:2:9: probes: expected a list of sections, found a section"},
+    {"tank too small", "scene: {name: s, end_time: 1}\ntank: {length: 0, height: 1}\n",
+     "bad.yaml:2:16: tank.length: expected a number > 0 and <= 100 (m), found '0'"},
+    {"broken YAML", "scene: {name: s, end_time: 1\n", "bad.yaml:2:1: not valid YAML: end of map flow not found"},
+    {"not a mapping", "- a\n- b\n",
+     "bad.yaml: a scene is a YAML mapping of sections (scene:, fluid:, ...), found something else"},
+};
+
+std::string halfeti_binary() { return std::string(HALFETI_BINARY_DIR) + "/src/app/halfeti"; }
+
+int run_and_capture(const std::string& args, std::string& stderr_text) {
+  const std::string err = std::string(HALFETI_BINARY_DIR) + "/check_stderr.txt";
+  const int raw = std::system((halfeti_binary() + " " + args + " >/dev/null 2>" + err).c_str());
+  std::ifstream in(err);
+  stderr_text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+
+}  // namespace
+
+TEST(SceneErrors, EachMalformedSceneGetsItsMessage) {
+  for (const auto& c : kCases) {
+    try {
+      scene::parse_scene(c.text, "bad.yaml", {}, *app::scene_schema());
+      ADD_FAILURE() << c.what << ": accepted";
+    } catch (const UserError& e) {
+      EXPECT_EQ(std::string(e.what()), c.message) << c.what;
+    }
+  }
+  EXPECT_NO_THROW(scene::parse_scene(kGood, "good.yaml", {}, *app::scene_schema()));
+}
+
+TEST(SceneErrors, CheckCommandAnswersOneLineAndExitsTwo) {
+  const std::string dir = std::string(HALFETI_BINARY_DIR) + "/scene_error_cases";
+  std::system(("mkdir -p " + dir).c_str());
+  for (const auto& c : kCases) {
+    const std::string path = dir + "/bad.yaml";
+    std::ofstream(path) << c.text;
+    std::string err;
+    const int status = run_and_capture("check " + path, err);
+    EXPECT_EQ(status, 2) << c.what;
+    // One line, prefixed, naming the file as given on the command line.
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << c.what << ": " << err;
+    std::string expected = c.message;
+    expected.replace(0, std::string("bad.yaml").size(), path);
+    EXPECT_EQ(err, "halfeti: error: " + expected + "\n") << c.what;
+  }
+}
