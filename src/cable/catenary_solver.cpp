@@ -136,7 +136,9 @@ FrameSolution solve_in_frame(double l, double h, const CableProperties& c, doubl
     }
     s.iterations = it;
     if (!accepted) break;  // no further decrease: at the round-off floor (checked below) or stuck
-    const bool stalled = (x_new - x).norm() <= 1e-16 * x_new.norm();
+    // At the round-off floor the residual only jitters: stop once it no longer halves.
+    const bool stalled = (x_new - x).norm() <= 1e-16 * x_new.norm() ||
+                         (r_new.norm() <= 1e-12 * scale && r_new.norm() > 0.5 * r.norm());
     x = x_new;
     p = p_new;
     r = r_new;
