@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "halfeti/cable/catenary.hpp"
 
@@ -32,6 +33,7 @@ TEST_P(FlexibilityAgainstDifferences, MatchesCentralDifferences) {
               (2 * step);
   const double error = (fd - p.flexibility).norm() / p.flexibility.norm();
   EXPECT_LT(error, 1e-7) << c.regime << "\nanalytic\n" << p.flexibility << "\nfd\n" << fd;
+  std::printf("flexibility vs differences, %s: %.2e\n", c.regime, error);
   // Symmetric: the Hessian of the complementary energy.
   EXPECT_EQ(p.flexibility(0, 1), p.flexibility(1, 0)) << c.regime;
   // The energy's gradient is (l, h).
