@@ -15,7 +15,9 @@ CableElement::CableElement(int node1, int node2, const CableProperties& cable)
                 "cable needs two distinct node indices, got " << node1 << " and " << node2);
 }
 
-std::vector<int> CableElement::nodes() const { return nodes_; }
+std::vector<int> CableElement::nodes() const {
+  return nodes_;
+}
 
 void CableElement::evaluate(const std::vector<Eigen::Vector2d>& positions, Eigen::VectorXd& internal_force,
                             Eigen::MatrixXd& tangent) {

@@ -10,8 +10,10 @@ namespace halfeti::cable {
 PerDepthCable per_unit_depth(const CableSet& set) {
   if (set.count < 1) HALFETI_USER_ERROR("cable count must be at least 1, got " << set.count);
   if (!(set.area > 0.0)) HALFETI_USER_ERROR("cable area must be positive, got " << set.area << " m^2");
-  if (!(set.modulus > 0.0)) HALFETI_USER_ERROR("cable modulus must be positive, got " << set.modulus << " Pa");
-  if (!(set.density >= 0.0)) HALFETI_USER_ERROR("cable density must be >= 0, got " << set.density << " kg/m^3");
+  if (!(set.modulus > 0.0))
+    HALFETI_USER_ERROR("cable modulus must be positive, got " << set.modulus << " Pa");
+  if (!(set.density >= 0.0))
+    HALFETI_USER_ERROR("cable density must be >= 0, got " << set.density << " kg/m^3");
   if (!(set.depth > 0.0)) HALFETI_USER_ERROR("cable depth must be positive, got " << set.depth << " m");
   if (!(set.fluid_density >= 0.0))
     HALFETI_USER_ERROR("fluid density must be >= 0, got " << set.fluid_density << " kg/m^3");

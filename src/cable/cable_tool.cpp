@@ -34,7 +34,8 @@ Eigen::Vector2d parse_point(const std::string& option, const std::string& text) 
 }
 
 double positive(const std::string& option, double value, const char* what) {
-  if (!(value > 0.0)) HALFETI_USER_ERROR("halfeti cable: " << option << " expects " << what << ", got " << value);
+  if (!(value > 0.0))
+    HALFETI_USER_ERROR("halfeti cable: " << option << " expects " << what << ", got " << value);
   return value;
 }
 
@@ -46,13 +47,17 @@ struct ToolInput {
 };
 
 ToolInput parse(const std::vector<std::string>& args) {
-  static const std::map<std::string, const char*> kOptions = {
-      {"--from", "a point X,Y"},           {"--to", "a point X,Y"},
-      {"--modulus", "E in Pa"},            {"--area", "A in m^2"},
-      {"--density", "rho in kg/m^3"},      {"--count", "a whole number N >= 1"},
-      {"--depth", "B in m"},               {"--gravity", "g in m/s^2"},
-      {"--submerged-in", "rho_w in kg/m^3"}, {"--unstretched-length", "L0 in m"},
-      {"--tension-stress", "S in Pa"}};
+  static const std::map<std::string, const char*> kOptions = {{"--from", "a point X,Y"},
+                                                              {"--to", "a point X,Y"},
+                                                              {"--modulus", "E in Pa"},
+                                                              {"--area", "A in m^2"},
+                                                              {"--density", "rho in kg/m^3"},
+                                                              {"--count", "a whole number N >= 1"},
+                                                              {"--depth", "B in m"},
+                                                              {"--gravity", "g in m/s^2"},
+                                                              {"--submerged-in", "rho_w in kg/m^3"},
+                                                              {"--unstretched-length", "L0 in m"},
+                                                              {"--tension-stress", "S in Pa"}};
   std::map<std::string, std::string> given;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& option = args[i];
@@ -75,8 +80,10 @@ ToolInput parse(const std::vector<std::string>& args) {
   ToolInput in;
   in.from = parse_point("--from", given["--from"]);
   in.to = parse_point("--to", given["--to"]);
-  if ((in.to - in.from).norm() == 0.0) HALFETI_USER_ERROR("halfeti cable: --from and --to are the same point");
-  in.set.modulus = positive("--modulus", parse_number("--modulus", given["--modulus"], "E in Pa"), "E > 0 in Pa");
+  if ((in.to - in.from).norm() == 0.0)
+    HALFETI_USER_ERROR("halfeti cable: --from and --to are the same point");
+  in.set.modulus =
+      positive("--modulus", parse_number("--modulus", given["--modulus"], "E in Pa"), "E > 0 in Pa");
   in.set.area = positive("--area", parse_number("--area", given["--area"], "A in m^2"), "A > 0 in m^2");
   in.set.density = parse_number("--density", given["--density"], "rho in kg/m^3");
   if (!(in.set.density >= 0.0))
@@ -97,15 +104,17 @@ ToolInput parse(const std::vector<std::string>& args) {
   if (given.count("--submerged-in")) {
     in.set.fluid_density = parse_number("--submerged-in", given["--submerged-in"], "rho_w in kg/m^3");
     if (!(in.set.fluid_density >= 0.0))
-      HALFETI_USER_ERROR("halfeti cable: --submerged-in expects rho_w >= 0 in kg/m^3, got " << in.set.fluid_density);
+      HALFETI_USER_ERROR("halfeti cable: --submerged-in expects rho_w >= 0 in kg/m^3, got "
+                         << in.set.fluid_density);
   }
   if (has_l0)
-    in.unstretched_length = positive("--unstretched-length",
-                                     parse_number("--unstretched-length", given["--unstretched-length"], "L0 in m"),
-                                     "L0 > 0 in m");
+    in.unstretched_length = positive(
+        "--unstretched-length",
+        parse_number("--unstretched-length", given["--unstretched-length"], "L0 in m"), "L0 > 0 in m");
   if (has_s)
-    in.tension_stress = positive("--tension-stress",
-                                 parse_number("--tension-stress", given["--tension-stress"], "S in Pa"), "S > 0 in Pa");
+    in.tension_stress =
+        positive("--tension-stress", parse_number("--tension-stress", given["--tension-stress"], "S in Pa"),
+                 "S > 0 in Pa");
   return in;
 }
 
@@ -126,8 +135,10 @@ std::string cable_tool_usage() {
          "structure) and prints JSON: end tensions (per unit depth [N/m], per real cable [N], stress [Pa]),\n"
          "tension components at --from, slack/taut state, sag, the unstretched length and the 4x4 tangent\n"
          "stiffness per unit depth in the order (x1, y1, x2, y2).\n"
-         "  N real cables (default 1) of area A [m^2], modulus E [Pa] and density RHO [kg/m^3] span a depth B\n"
-         "  (default 1 m): per unit depth EA' = N E A / B and w' = N (RHO - RHO_W) A g / B (RHO_W = 0 in air).\n"
+         "  N real cables (default 1) of area A [m^2], modulus E [Pa] and density RHO [kg/m^3] span a depth "
+         "B\n"
+         "  (default 1 m): per unit depth EA' = N E A / B and w' = N (RHO - RHO_W) A g / B (RHO_W = 0 in "
+         "air).\n"
          "  --tension-stress S finds the unstretched length L0 whose tension stress at --to is S.\n";
 }
 
@@ -144,8 +155,8 @@ int run_cable_tool(const std::vector<std::string>& args, std::ostream& out) {
     l0 = *in.unstretched_length;
   } else {
     const double tension = *in.tension_stress * per_depth.area;
-    l0 = unstretched_length_for_end_tension(in.from, in.to, per_depth.axial_stiffness, per_depth.weight_per_length,
-                                            tension);
+    l0 = unstretched_length_for_end_tension(in.from, in.to, per_depth.axial_stiffness,
+                                            per_depth.weight_per_length, tension);
   }
   const CatenarySolution s = solve_catenary(in.from, in.to, cable_properties(in.set, l0));
 

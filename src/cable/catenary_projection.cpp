@@ -2,11 +2,11 @@
 //
 // Every term is an integral over s0 of a function of the tension vector (tx, V), V = va + w s0, written in a
 // form that neither divides by w nor cancels: see docs/cable.md, "Evaluating the integrals".
-#include "halfeti/cable/catenary.hpp"
-
 #include <array>
 #include <cmath>
 #include <limits>
+
+#include "halfeti/cable/catenary.hpp"
 
 namespace halfeti::cable {
 namespace {
@@ -165,7 +165,8 @@ CatenaryProjection catenary_projection(double tx, double ty, double length, doub
   return p;
 }
 
-Eigen::Vector2d catenary_point(double tx, double ty, double s0, double axial_stiffness, double weight_per_length) {
+Eigen::Vector2d catenary_point(double tx, double ty, double s0, double axial_stiffness,
+                               double weight_per_length) {
   if (s0 <= 0.0) return Eigen::Vector2d::Zero();
   const SegmentIntegrals seg = integrate_segment(tx, ty, weight_per_length, s0);
   const double x = tx * s0 / axial_stiffness + (tx > 0.0 ? tx * seg.inv_tension : 0.0);
@@ -173,6 +174,8 @@ Eigen::Vector2d catenary_point(double tx, double ty, double s0, double axial_sti
   return {x, y};
 }
 
-const char* to_string(CableState state) { return state == CableState::kTaut ? "taut" : "slack"; }
+const char* to_string(CableState state) {
+  return state == CableState::kTaut ? "taut" : "slack";
+}
 
 }  // namespace halfeti::cable

@@ -65,9 +65,9 @@ struct FrameSolution {
 };
 
 [[noreturn]] void newton_failed(double l, double h, const CableProperties& c, double w, double residual) {
-  HALFETI_NUMERICAL_ERROR("catenary cable did not converge: span l = " << l << " m, h = " << h
-                          << " m, L0 = " << c.unstretched_length << " m, EA = " << c.axial_stiffness
-                          << " N, w = " << w << " N/m (residual " << residual << " m)");
+  HALFETI_NUMERICAL_ERROR("catenary cable did not converge: span l = "
+                          << l << " m, h = " << h << " m, L0 = " << c.unstretched_length << " m, EA = "
+                          << c.axial_stiffness << " N, w = " << w << " N/m (residual " << residual << " m)");
 }
 
 // Vertical chord (l = 0): tx = 0 by symmetry, and h(ty) is piecewise linear (fold or no fold).
@@ -219,7 +219,7 @@ CatenarySolution solve_catenary(const Eigen::Vector2d& end1, const Eigen::Vector
     sol.carries_load = true;
     sol.iterations = fs.iterations;
     sol.end_tension = frame.axes * fs.tension;
-    sol.tension_start = std::hypot(tx, ty);      // eq. 14, s0 = 0
+    sol.tension_start = std::hypot(tx, ty);         // eq. 14, s0 = 0
     sol.tension_end = std::hypot(tx, ty + w * l0);  // eq. 14, s0 = L0
     sol.sag = sag_in_frame(fs, l, h, cable, w);
     const Eigen::Matrix2d& f = fs.projection.flexibility;
@@ -231,16 +231,17 @@ CatenarySolution solve_catenary(const Eigen::Vector2d& end1, const Eigen::Vector
       k(0, 1) = k(1, 0) = 0.5 * (k(0, 1) + k(1, 0));
     }
     const Eigen::Matrix2d& a = frame.axes;
-    sol.flexibility = a * (std::isinf(f(0, 0)) ? Eigen::Matrix2d(Eigen::Vector2d(0.0, f(1, 1)).asDiagonal()) : f) *
-                      a.transpose();
+    sol.flexibility =
+        a * (std::isinf(f(0, 0)) ? Eigen::Matrix2d(Eigen::Vector2d(0.0, f(1, 1)).asDiagonal()) : f) *
+        a.transpose();
     sol.stiffness = a * k * a.transpose();
   }
   // Forces on the ends: +T(0) on end 1, -T(L0) on end 2; they sum to the cable's load.
   const Eigen::Vector2d total_load(cable.horizontal_load * cable.unstretched_length,
                                    -cable.weight_per_length * cable.unstretched_length);
   sol.nodal_force.head<2>() = sol.end_tension;
-  sol.nodal_force.tail<2>() = sol.carries_load ? Eigen::Vector2d(total_load - sol.end_tension)
-                                               : Eigen::Vector2d::Zero();
+  sol.nodal_force.tail<2>() =
+      sol.carries_load ? Eigen::Vector2d(total_load - sol.end_tension) : Eigen::Vector2d::Zero();
   // d(end_tension)/d(end2 - end1) = K, so the force the nodes exert on the cable has tangent [K -K; -K K].
   sol.tangent.topLeftCorner<2, 2>() = sol.stiffness;
   sol.tangent.topRightCorner<2, 2>() = -sol.stiffness;

@@ -1,4 +1,5 @@
-// Unstretched length for a prescribed end tension: the inverse problem of the design tool (`--tension-stress`).
+// Unstretched length for a prescribed end tension: the inverse problem of the design tool
+// (`--tension-stress`).
 #include <cmath>
 
 #include "halfeti/cable/catenary.hpp"
@@ -7,9 +8,11 @@
 namespace halfeti::cable {
 
 double unstretched_length_for_end_tension(const Eigen::Vector2d& end1, const Eigen::Vector2d& end2,
-                                          double axial_stiffness, double weight_per_length, double end_tension) {
+                                          double axial_stiffness, double weight_per_length,
+                                          double end_tension) {
   const double chord = (end2 - end1).norm();
-  if (!(end_tension > 0.0)) HALFETI_USER_ERROR("the prescribed cable tension must be positive, got " << end_tension);
+  if (!(end_tension > 0.0))
+    HALFETI_USER_ERROR("the prescribed cable tension must be positive, got " << end_tension);
   if (!(chord > 0.0)) HALFETI_USER_ERROR("the cable ends coincide: no unstretched length gives a tension");
   CableProperties cable;
   cable.axial_stiffness = axial_stiffness;

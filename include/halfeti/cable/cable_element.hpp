@@ -1,4 +1,5 @@
-// The catenary cable as a nodal element of the structure's Newton system (include/halfeti/core/nodal_element.hpp).
+// The catenary cable as a nodal element of the structure's Newton system
+// (include/halfeti/core/nodal_element.hpp).
 #pragma once
 
 #include <vector>
@@ -18,7 +19,8 @@ class CableElement : public halfeti::NodalElement {
   std::vector<int> nodes() const override;
 
   // Internal force: the force the nodes exert on the cable (minus the cable's pull on them), and its tangent
-  // [K -K; -K K] (or K alone for an anchored cable). The converged end tension is kept as the next first guess.
+  // [K -K; -K K] (or K alone for an anchored cable). The converged end tension is kept as the next first
+  // guess.
   void evaluate(const std::vector<Eigen::Vector2d>& positions, Eigen::VectorXd& internal_force,
                 Eigen::MatrixXd& tangent) override;
 

@@ -1,4 +1,5 @@
-// `halfeti cable`: design one cable set (tension, sag, stiffness, or the unstretched length for a pretension).
+// `halfeti cable`: design one cable set (tension, sag, stiffness, or the unstretched length for a
+// pretension).
 #pragma once
 
 #include <ostream>
@@ -7,8 +8,8 @@
 
 namespace halfeti::cable {
 
-// `args` are the arguments after `halfeti cable`. Prints JSON (or the usage for --help) to `out` and returns the
-// exit status (0). Bad input throws halfeti::UserError naming the option.
+// `args` are the arguments after `halfeti cable`. Prints JSON (or the usage for --help) to `out` and returns
+// the exit status (0). Bad input throws halfeti::UserError naming the option.
 int run_cable_tool(const std::vector<std::string>& args, std::ostream& out);
 
 // The usage text printed by --help.

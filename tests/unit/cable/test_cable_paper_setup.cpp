@@ -1,7 +1,7 @@
 // The paper's tank (section 3, Table 1): 16.2 cm unstretched length against the 135 kPa initial tension.
 //
-// Geometry: tank 0.30 m long, rubber 8 cm tall and 0.3 cm thick at x = 0.15 m; cables from the walls 1 cm above
-// the bottom to the rubber's top corners (0.1485, 0.08) and (0.1515, 0.08). Three 2 mm x 2 mm cables,
+// Geometry: tank 0.30 m long, rubber 8 cm tall and 0.3 cm thick at x = 0.15 m; cables from the walls 1 cm
+// above the bottom to the rubber's top corners (0.1485, 0.08) and (0.1515, 0.08). Three 2 mm x 2 mm cables,
 // E = 1.14 MPa, across the 0.15 m depth. Cable density: our choice, 1150 kg/m^3 (a rubber cord), submerged in
 // water; its submerged weight over the area is (1150 - 1000) g L0 = 0.22-0.24 kPa, the size of the paper's
 // "nearly 0.25 kPa" slack-cable tension.
@@ -33,7 +33,7 @@ const Eigen::Vector2d kRubberCorner(0.1485, 0.08);
 
 TEST(PaperSetup, PerDepthFigures) {
   const PerDepthCable c = per_unit_depth(paper_cables());
-  EXPECT_NEAR(c.axial_stiffness, 3 * 1.14e6 * 4e-6 / 0.15, 1e-12);                    // 91.2 N/m
+  EXPECT_NEAR(c.axial_stiffness, 3 * 1.14e6 * 4e-6 / 0.15, 1e-12);                      // 91.2 N/m
   EXPECT_NEAR(c.weight_per_length, 3 * (1150.0 - 1000.0) * 4e-6 * 9.81 / 0.15, 1e-14);  // 0.11772 N/m^2
   EXPECT_NEAR(c.area, 3 * 4e-6 / 0.15, 1e-18);                                          // 8e-5 m
   EXPECT_NEAR(tension_stress(paper_cables(), 10.8), 135e3, 1e-6);
@@ -48,7 +48,8 @@ TEST(PaperSetup, UnstretchedLength162cmGivesAbout15kPaNot135) {
   EXPECT_NEAR(chord, 0.164171, 1e-6);  // sqrt(0.1485^2 + 0.07^2), longer than 16.2 cm: taut
   // Hand calculation: a straight elastic bar, E (chord / L0 - 1) = 15.28 kPa.
   const double bar_stress = 1.14e6 * (chord / 0.162 - 1.0);
-  const CatenarySolution s = solve_catenary(kWallAnchor, kRubberCorner, cable_properties(paper_cables(), 0.162));
+  const CatenarySolution s =
+      solve_catenary(kWallAnchor, kRubberCorner, cable_properties(paper_cables(), 0.162));
   const double stress_rubber = tension_stress(paper_cables(), s.tension_end);
   const double stress_wall = tension_stress(paper_cables(), s.tension_start);
   std::printf("L0 = 16.2 cm: stress %.1f Pa at the rubber, %.1f Pa at the wall (bar: %.1f Pa), sag %.3g m\n",
@@ -84,7 +85,8 @@ TEST(PaperSetup, UnstretchedLengthFor135kPa) {
 TEST(PaperSetup, SlackCableCarriesAboutItsSubmergedWeight) {
   // The rubber's top swung 3 cm towards the left wall: the left cable (L0 for 135 kPa) goes slack.
   const CableSet set = paper_cables();
-  const CatenarySolution s = solve_catenary(kWallAnchor, Eigen::Vector2d(0.1185, 0.08), cable_properties(set, 0.1468));
+  const CatenarySolution s =
+      solve_catenary(kWallAnchor, Eigen::Vector2d(0.1185, 0.08), cable_properties(set, 0.1468));
   const double stress = tension_stress(set, s.tension_end);
   std::printf("slack left cable: stress %.1f Pa at the rubber, sag %.4f m\n", stress, s.sag);
   EXPECT_EQ(s.state, CableState::kSlack);

@@ -11,9 +11,9 @@ namespace halfeti::cable {
 namespace {
 
 std::vector<std::string> paper_args(const std::string& length_option, const std::string& value) {
-  return {"--from",  "0,0.01", "--to",    "0.1485,0.08", "--modulus",    "1.14e6", "--area",
-          "4e-6",    "--density", "1150", "--count", "3", "--depth", "0.15", "--submerged-in", "1000",
-          length_option, value};
+  return {"--from",  "0,0.01", "--to",           "0.1485,0.08", "--modulus",   "1.14e6",
+          "--area",  "4e-6",   "--density",      "1150",        "--count",     "3",
+          "--depth", "0.15",   "--submerged-in", "1000",        length_option, value};
 }
 
 YAML::Node run(const std::vector<std::string>& args) {

@@ -27,17 +27,21 @@ TEST_P(FlexibilityAgainstDifferences, MatchesCentralDifferences) {
   const CatenaryProjection p = catenary_projection(c.tx, c.ty, c.l0, c.ea, c.w);
   const double step = 1e-5 * c.tx;  // tx sets the length scale of the tension's turning
   Eigen::Matrix2d fd;
-  fd.col(0) = (projections(c.tx + step, c.ty, c.l0, c.ea, c.w) - projections(c.tx - step, c.ty, c.l0, c.ea, c.w)) /
-              (2 * step);
-  fd.col(1) = (projections(c.tx, c.ty + step, c.l0, c.ea, c.w) - projections(c.tx, c.ty - step, c.l0, c.ea, c.w)) /
-              (2 * step);
+  fd.col(0) =
+      (projections(c.tx + step, c.ty, c.l0, c.ea, c.w) - projections(c.tx - step, c.ty, c.l0, c.ea, c.w)) /
+      (2 * step);
+  fd.col(1) =
+      (projections(c.tx, c.ty + step, c.l0, c.ea, c.w) - projections(c.tx, c.ty - step, c.l0, c.ea, c.w)) /
+      (2 * step);
   const double error = (fd - p.flexibility).norm() / p.flexibility.norm();
   EXPECT_LT(error, 1e-7) << c.regime << "\nanalytic\n" << p.flexibility << "\nfd\n" << fd;
   std::printf("flexibility vs differences, %s: %.2e\n", c.regime, error);
   // Symmetric: the Hessian of the complementary energy.
   EXPECT_EQ(p.flexibility(0, 1), p.flexibility(1, 0)) << c.regime;
   // The energy's gradient is (l, h).
-  auto energy = [&](double tx, double ty) { return catenary_projection(tx, ty, c.l0, c.ea, c.w).complementary_energy; };
+  auto energy = [&](double tx, double ty) {
+    return catenary_projection(tx, ty, c.l0, c.ea, c.w).complementary_energy;
+  };
   const Eigen::Vector2d grad((energy(c.tx + step, c.ty) - energy(c.tx - step, c.ty)) / (2 * step),
                              (energy(c.tx, c.ty + step) - energy(c.tx, c.ty - step)) / (2 * step));
   const Eigen::Vector2d lh(p.horizontal, p.vertical);

@@ -168,7 +168,8 @@ TEST(CatenarySolver, ReproducesMoorPyCatenaryTestCases) {
     const CatenarySolution s = solve_catenary({0.0, 0.0}, {k.x, k.z}, make_cable(k.l0, k.ea, k.w));
     const Eigen::Vector4d expected(k.fah, k.fav, k.fbh, k.fbv);
     for (int i = 0; i < 4; ++i)
-      EXPECT_NEAR(s.nodal_force(i), expected(i), 1e-5 * std::fabs(expected(i))) << "x = " << k.x << ", i = " << i;
+      EXPECT_NEAR(s.nodal_force(i), expected(i), 1e-5 * std::fabs(expected(i)))
+          << "x = " << k.x << ", i = " << i;
   }
 }
 
@@ -188,7 +189,8 @@ TEST(CatenarySolver, RandomGeometriesFromDeepSlackToTautAllConverge) {
     const double ratio = (i % 2 == 0) ? std::pow(10.0, -2.0 + 2.0 * unit(rng)) : 0.95 + 0.65 * unit(rng);
     double angle = 2.0 * M_PI * unit(rng);
     if (i % 5 == 0) {  // nearly vertical, up or down
-      angle = (unit(rng) < 0.5 ? 0.5 : 1.5) * M_PI + (unit(rng) - 0.5) * std::pow(10.0, -1.0 - 8.0 * unit(rng));
+      angle =
+          (unit(rng) < 0.5 ? 0.5 : 1.5) * M_PI + (unit(rng) - 0.5) * std::pow(10.0, -1.0 - 8.0 * unit(rng));
       ++near_vertical;
     }
     const Eigen::Vector2d end1(unit(rng), unit(rng));
@@ -204,8 +206,8 @@ TEST(CatenarySolver, RandomGeometriesFromDeepSlackToTautAllConverge) {
     const Eigen::Vector2d span = end2 - end1;
     // Projection residual, mirrored into the frame where Tx >= 0 and the load points down.
     const Eigen::Vector2d mirror(s.end_tension.x() < 0.0 ? -1.0 : 1.0, w < 0.0 ? -1.0 : 1.0);
-    const Eigen::Vector2d reached = mirror.cwiseProduct(catenary_point(
-        mirror.x() * s.end_tension.x(), mirror.y() * s.end_tension.y(), l0, ea, std::fabs(w)));
+    const Eigen::Vector2d reached = mirror.cwiseProduct(
+        catenary_point(mirror.x() * s.end_tension.x(), mirror.y() * s.end_tension.y(), l0, ea, std::fabs(w)));
     const double residual = (reached - span).norm() / std::max(span.norm(), l0);
     worst_residual = std::max(worst_residual, residual);
     ASSERT_LT(residual, 1e-9) << "case " << i << " span " << span.transpose() << " L0 " << l0 << " EA " << ea
