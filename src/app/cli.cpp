@@ -9,7 +9,7 @@ std::string usage_text() {
   return R"(halfeti: submerged elastic plate, cables and sloshing water under earthquakes (delta-SPH + FE + contact)
 
 usage:
-  halfeti run SCENE.yaml [--set key.path=value ...] [--out DIR] [--restart FILE] [-- PETSc options]
+  halfeti run SCENE.yaml [--set key.path=value ...] [--out DIR] [-- PETSc options]
   halfeti check SCENE.yaml [--set key.path=value ...]
   halfeti cable --from X1,Y1 --to X2,Y2 --modulus E --area A --density RHO
                 (--unstretched-length L0 | --tension-stress S) [...]   (halfeti cable --help)
@@ -72,8 +72,6 @@ Command parse_command_line(const std::vector<std::string>& args) {
       c.overrides.push_back(a.substr(6));
     } else if (a == "--out" && c.kind == Command::Kind::kRun) {
       c.out_dir = value("--out");
-    } else if (a == "--restart" && c.kind == Command::Kind::kRun) {
-      c.restart = value("--restart");
     } else if (!a.empty() && a[0] == '-') {
       HALFETI_USER_ERROR("unknown option '" << a << "' for 'halfeti " << word << "'; try 'halfeti --help'");
     } else if (c.scene.empty()) {

@@ -28,14 +28,15 @@ int execute(const std::vector<std::string>& args, MPI_Comm comm) {
       HALFETI_USER_ERROR("'halfeti cable' is not available in this build");
     case Command::Kind::kCheck: {
       scene::Scene s = scene::load_scene(cmd.scene, cmd.overrides, *scene_schema(), comm);
-      Parts parts = build_parts(s, comm);
+      Parts parts;
+      build_parameters(s, parts);
       make_probes(s.root(), parts);
       if (rank == 0) std::cout << "# " << cmd.scene << ": ok\n" << s.resolved_text();
       return 0;
     }
     case Command::Kind::kRun: {
       scene::Scene s = scene::load_scene(cmd.scene, cmd.overrides, *scene_schema(), comm);
-      RunOptions opts{cmd.out_dir, cmd.restart, cmd.petsc_args, true};
+      RunOptions opts{cmd.out_dir, cmd.petsc_args, true};
       Simulation sim(comm, std::move(s), opts);
       sim.run();
       return 0;

@@ -1,5 +1,6 @@
 #include "halfeti/app/scene_schema.hpp"
 
+#include "halfeti/app/fluid_section.hpp"
 #include "halfeti/app/probes.hpp"
 #include "halfeti/excitation/excitation_scene.hpp"
 
@@ -50,6 +51,7 @@ std::shared_ptr<const Schema> scene_schema() {
                .at_most(100.0));
     s->add(Key::section("tank", "the tank", tank_schema()));
     s->add(Key::section("excitation", "ground motion", excitation::excitation_schema()).always());
+    s->add(Key::section("fluid", "the water (delta-SPH)", fluid_schema()));
     s->add(Key::list("probes", "columns of probes.csv", probe_schema()));
     return std::shared_ptr<const Schema>(s);
   }();

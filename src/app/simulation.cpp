@@ -5,20 +5,15 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 
+#include "halfeti/app/fluid_section.hpp"
 #include "halfeti/core/error.hpp"
 #include "halfeti/core/version.hpp"
 #include "halfeti/excitation/excitation_scene.hpp"
-#include "halfeti/io/probe_writer.hpp"
+#include "halfeti/io/json.hpp"
 
 namespace halfeti::app {
-
-class ProbeWriterHolder {
- public:
-  ProbeWriterHolder(const std::string& path, const std::vector<std::string>& names, bool writer)
-      : writer(path, names, writer) {}
-  io::ProbeWriter writer;
-};
 
 namespace {
 
@@ -31,16 +26,29 @@ double wall_now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
+// The largest |a_g| over the run, sampled finely enough for records (0.02 s) and pulses.
+double peak_ground_acceleration(const excitation::GroundMotion& m, double end) {
+  double peak = 0.0;
+  const int n = std::max(2000, static_cast<int>(end / 1e-3));
+  for (int i = 0; i <= n; ++i) peak = std::max(peak, std::abs(m.acceleration(end * i / n)));
+  return peak;
+}
+
+std::string format(const char* fmt, double a) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, fmt, a);
+  return buf;
+}
+
 }  // namespace
 
-Parts build_parts(const scene::Scene& scene, MPI_Comm comm) {
-  (void)comm;
+void build_parameters(const scene::Scene& scene, Parts& parts) {
   const scene::Node root = scene.root();
-  Parts parts;
   parts.scene_dir = directory_of(scene.file);
   parts.gravity = root.real("gravity");
   parts.motion = excitation::make_ground_motion(root.section("excitation"), parts.scene_dir);
-  return parts;
+  const double end = root.section("scene").real("end_time");
+  if (root.has("fluid")) parts.fluid_params = fluid_params(root, peak_ground_acceleration(*parts.motion, end));
 }
 
 Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
@@ -49,14 +57,12 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
   MPI_Comm_size(comm_, &size_);
   const scene::Node root = scene_.root();
   out_dir_ = options_.out_dir.empty() ? "out/" + root.section("scene").string("name") : options_.out_dir;
-  // Directory creation on rank 0, outcome shared, so a bad --out is one error on every rank.
+  // The folders are made on rank 0 and the outcome shared, so a bad --out is one error on every rank.
   int ok = 1;
   std::string why;
   if (rank_ == 0) {
     try {
-      io::make_directories(out_dir_);
-      io::make_directories(out_dir_ + "/fields");
-      io::make_directories(out_dir_ + "/checkpoints");
+      for (const char* sub : {"", "/fields", "/checkpoints"}) io::make_directories(out_dir_ + sub);
     } catch (const UserError& e) {
       ok = 0;
       why = e.what();
@@ -65,34 +71,87 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
   MPI_Bcast(&ok, 1, MPI_INT, 0, comm_);
   if (!ok) throw UserError(rank_ == 0 ? why : "cannot create the output folder '" + out_dir_ + "'");
 
-  parts_ = build_parts(scene_, comm_);
+  build_parameters(scene_, parts_);
   probes_ = make_probes(root, parts_);
+  if (parts_.fluid_params) {
+    ScopedTimer timer(timers_, "setup");
+    parts_.fluid = std::make_unique<sph::Fluid>(comm_, *parts_.fluid_params, parts_.motion.get());
+    fluid_fields_ = std::make_unique<io::FieldSeries>(comm_, out_dir_ + "/fields", "fluid");
+    checkpoints_ = std::make_unique<io::FieldSeries>(comm_, out_dir_ + "/checkpoints", "fluid_state");
+  }
   std::vector<std::string> names;
   for (const auto& p : probes_) names.push_back(p.name);
-  probe_out_ = std::make_unique<ProbeWriterHolder>(out_dir_ + "/probes.csv", names, rank_ == 0);
+  probe_out_ = std::make_unique<io::ProbeWriter>(out_dir_ + "/probes.csv", names, rank_ == 0);
   log_ = std::make_unique<io::RunLog>(out_dir_ + "/log.txt", rank_ == 0, options_.echo);
   if (rank_ == 0) {
     std::ofstream resolved(out_dir_ + "/scene.resolved.yaml");
-    resolved << "# resolved by " << "halfeti " << kVersion << " from " << scene_.file << "\n"
-             << scene_.resolved_text();
+    resolved << "# resolved by halfeti " << kVersion << " from " << scene_.file << "\n" << scene_.resolved_text();
   }
 }
 
 Simulation::~Simulation() = default;
 
-void Simulation::sample_probes(double t) {
+void Simulation::announce() {
+  log_->line(std::string("halfeti ") + kVersion + ": scene " + scene_.file + " on " + std::to_string(size_) +
+             " rank(s); output in " + out_dir_);
+  log_->line("excitation: " + parts_.motion->describe());
+  if (const auto* f = parts_.fluid.get()) {
+    std::ostringstream os;
+    os << "fluid: " << f->global_count() << " particles, dx = " << f->params().spacing
+       << " m, h = " << f->smoothing_length() << " m, c0 = " << f->sound_speed() << " m/s, scheme "
+       << (f->params().scheme == sph::Scheme::kDeltaSph ? "delta-SPH" : "standard SPH");
+    log_->line(os.str());
+  }
+  if (!parts_.fluid) log_->line("no fluid: the clock advances by the probe interval");
+}
+
+double Simulation::advance(double remaining) {
+  if (parts_.fluid) {
+    parts_.fluid->step();
+    return parts_.fluid->dt();
+  }
+  return std::min(scene_.root().section("output").real("probe_interval"), remaining);
+}
+
+void Simulation::sample(double t) {
+  ScopedTimer timer(timers_, "probes");
   std::vector<double> row;
   row.reserve(probes_.size());
   for (auto& p : probes_) row.push_back(p.sample(t));
-  probe_out_->writer.write(t, row);
+  probe_out_->write(t, row);
+  if (parts_.fluid) max_density_variation_ = std::max(max_density_variation_, parts_.fluid->max_density_variation());
 }
 
-std::string Simulation::progress_line(double t, double dt, double wall) const {
+void Simulation::write_fields(double t) {
+  if (!parts_.fluid) return;
+  ScopedTimer timer(timers_, "fields");
+  const sph::Fluid& f = *parts_.fluid;
+  const std::size_t n = f.owned_count();
+  const std::vector<double> p = f.pressure();
+  std::vector<double> gid(f.gid().begin(), f.gid().begin() + static_cast<long>(n));
+  fluid_fields_->write(t, n, f.x().data(), f.y().data(),
+                       {{"vx", f.vx().data()}, {"vy", f.vy().data()}, {"rho", f.rho().data()},
+                        {"p", p.data()}, {"gid", gid.data()}});
+}
+
+void Simulation::write_checkpoint(const std::string& label) {
+  if (!parts_.fluid) return;
+  ScopedTimer timer(timers_, "checkpoint");
+  const sph::Fluid& f = *parts_.fluid;
+  const std::size_t n = f.owned_count();
+  std::vector<double> gid(f.gid().begin(), f.gid().begin() + static_cast<long>(n));
+  const std::string path = checkpoints_->write(t_, n, f.x().data(), f.y().data(),
+                                               {{"vx", f.vx().data()}, {"vy", f.vy().data()},
+                                                {"rho", f.rho().data()}, {"gid", gid.data()}});
+  log_->line("checkpoint (" + label + "): " + path);
+}
+
+std::string Simulation::progress_line(double dt, double wall) const {
   const double end = scene_.root().section("scene").real("end_time");
-  const double eta = t > 0 ? wall * (end - t) / t : 0.0;
+  const double eta = t_ > 0 ? wall * std::max(0.0, end - t_) / t_ : 0.0;
   char buf[160];
-  std::snprintf(buf, sizeof buf, "t = %.4f s (%5.1f%%)  step %lld  dt = %.3e s  wall %.1f s  eta %.1f s", t,
-                100.0 * t / end, steps_, dt, wall, eta);
+  std::snprintf(buf, sizeof buf, "t = %.4f s (%5.1f%%)  step %lld  dt = %.3e s  wall %.1f s  eta %.1f s", t_,
+                std::min(100.0, 100.0 * t_ / end), steps_, dt, wall, eta);
   return buf;
 }
 
@@ -101,48 +160,68 @@ void Simulation::run() {
   const double end = root.section("scene").real("end_time");
   const scene::Node out = root.section("output");
   const double probe_dt = out.real("probe_interval");
+  const double field_dt = out.real("field_interval");
+  const double checkpoint_dt = out.real("checkpoint_interval");
   const double progress_dt = out.real("progress_interval") > 0 ? out.real("progress_interval") : end / 50.0;
   const double start = wall_now();
+  announce();
+  if (parts_.fluid) initial_mass_ = parts_.fluid->total_mass();
 
-  log_->line(std::string("halfeti ") + kVersion);
-  log_->line("scene " + scene_.file + " on " + std::to_string(size_) + " rank(s); output in " + out_dir_);
-  log_->line("excitation: " + parts_.motion->describe());
-
-  std::string status = "ok";
+  double next_probe = probe_dt, next_field = field_dt, next_checkpoint = checkpoint_dt, next_progress = progress_dt;
+  sample(t_);
+  if (field_dt > 0) write_fields(t_);
+  const double loop_start = wall_now();
+  double dt = 0.0;
   try {
-    // With no part that sets its own step, the clock advances by the probe interval.
-    const double dt = probe_dt;
-    double next_probe = 0.0, next_progress = progress_dt;
-    {
-      ScopedTimer timer(timers_, "probes");
-      sample_probes(t_);
-    }
-    next_probe += probe_dt;
-    while (t_ < end - 1e-12 * end) {
-      const double step = std::min(dt, end - t_);
-      t_ += step;
+    // A step ends within round-off of a scheduled time counts as reaching it.
+    const double tol = 1e-9 * end;
+    while (t_ < end - tol) {
+      dt = advance(end - t_);
+      t_ = parts_.fluid ? parts_.fluid->time() : t_ + dt;
       ++steps_;
-      if (t_ >= next_probe - 1e-9 * probe_dt) {
-        ScopedTimer timer(timers_, "probes");
-        sample_probes(t_);
-        next_probe += probe_dt;
+      if (t_ >= next_probe - tol) {
+        sample(t_);
+        while (next_probe <= t_ + tol) next_probe += probe_dt;
       }
-      if (t_ >= next_progress) {
-        log_->line(progress_line(t_, step, wall_now() - start));
-        next_progress += progress_dt;
+      if (field_dt > 0 && t_ >= next_field - tol) {
+        write_fields(t_);
+        while (next_field <= t_ + tol) next_field += field_dt;
+      }
+      if (checkpoint_dt > 0 && t_ >= next_checkpoint - tol) {
+        write_checkpoint("scheduled");
+        while (next_checkpoint <= t_ + tol) next_checkpoint += checkpoint_dt;
+      }
+      if (t_ >= next_progress - tol) {
+        log_->line(progress_line(dt, wall_now() - start));
+        while (next_progress <= t_ + tol) next_progress += progress_dt;
       }
     }
-  } catch (const NumericalError&) {
-    status = "numerical_failure";
-    write_summary(status, wall_now() - start);
+  } catch (const NumericalError& e) {
+    log_->line(std::string("stopped: ") + e.what());
+    write_checkpoint("at the failure");
+    write_summary("numerical_failure", wall_now() - start, wall_now() - loop_start);
     throw;
   }
-  log_->line(progress_line(t_, 0.0, wall_now() - start));
-  write_summary(status, wall_now() - start);
-  log_->line("done: " + std::to_string(steps_) + " steps in " + std::to_string(wall_now() - start) + " s");
+  const double loop_wall = wall_now() - loop_start;
+  write_checkpoint("final");
+  log_->line(progress_line(dt, wall_now() - start));
+  write_summary("ok", wall_now() - start, loop_wall);
+  log_->line("done: " + std::to_string(steps_) + " steps, " + format("%.2f", wall_now() - start) + " s wall");
 }
 
-void Simulation::write_summary(const std::string& status, double wall) {
+HealthLog Simulation::health_events() const {
+  HealthLog out;
+  if (parts_.fluid)
+    for (const auto& e : parts_.fluid->health_events()) out.push_back({e.time, e.step, e.kind, e.message, e.fatal});
+  return out;
+}
+
+void Simulation::write_summary(const std::string& status, double wall, double loop_wall) {
+  // Every rank takes part in the collective reads below; rank 0 writes.
+  const long long particles = parts_.fluid ? parts_.fluid->global_count() : 0;
+  const double mass = parts_.fluid ? parts_.fluid->total_mass() : 0.0;
+  PhaseTimers timers = timers_;
+  if (parts_.fluid) timers.merge(parts_.fluid->timers());
   if (rank_ != 0) return;
   const scene::Node root = scene_.root();
   io::Json j = io::Json::object();
@@ -150,19 +229,21 @@ void Simulation::write_summary(const std::string& status, double wall) {
   j.set("scene", root.section("scene").string("name"));
   j.set("scene_file", scene_.file);
   j.set("ranks", size_);
-  j.set("particles", 0);
+  j.set("particles", particles);
   j.set("structure_dofs", 0);
   j.set("steps", steps_);
   j.set("simulated_time", t_);
   j.set("wall_time", wall);
-  j.set("ns_per_particle_step", io::Json());
-  io::Json timers = io::Json::object();
-  for (const auto& [phase, seconds] : timers_.all()) timers.set(phase, seconds);
-  j.set("timers", timers);
-  j.set("max_density_variation", io::Json());
-  j.set("mass_error", io::Json());
+  j.set("loop_wall_time", loop_wall);
+  j.set("ns_per_particle_step",
+        particles > 0 && steps_ > 0 ? io::Json(1e9 * loop_wall / (static_cast<double>(particles) * steps_)) : io::Json());
+  io::Json tj = io::Json::object();
+  for (const auto& [phase, seconds] : timers.all()) tj.set(phase, seconds);
+  j.set("timers", tj);
+  j.set("max_density_variation", parts_.fluid ? io::Json(max_density_variation_) : io::Json());
+  j.set("mass_error", parts_.fluid && initial_mass_ > 0 ? io::Json((mass - initial_mass_) / initial_mass_) : io::Json());
   io::Json events = io::Json::array();
-  for (const auto& e : health_) {
+  for (const auto& e : health_events()) {
     io::Json ev = io::Json::object();
     ev.set("time", e.time).set("step", e.step).set("kind", e.kind).set("fatal", e.fatal).set("message", e.message);
     events.push(ev);

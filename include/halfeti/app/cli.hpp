@@ -12,7 +12,6 @@ struct Command {
   std::string scene;                     // run, check
   std::vector<std::string> overrides;    // --set key.path=value
   std::string out_dir;                   // --out (default out/<scene name>)
-  std::string restart;                   // --restart FILE
   std::vector<std::string> petsc_args;   // after --
   std::vector<std::string> tool_args;    // cable: everything after the word
 };

@@ -13,37 +13,42 @@
 #include "halfeti/core/health.hpp"
 #include "halfeti/core/scene.hpp"
 #include "halfeti/core/timers.hpp"
-#include "halfeti/io/json.hpp"
+#include "halfeti/io/fields.hpp"
+#include "halfeti/io/probe_writer.hpp"
 #include "halfeti/io/run_log.hpp"
 
 namespace halfeti::app {
 
 struct RunOptions {
   std::string out_dir;                  // empty: out/<scene.name>
-  std::string restart;                  // checkpoint to start from (empty: from the scene's initial state)
   std::vector<std::string> petsc_args;  // passed to PETSc when the scene has a structure
   bool echo = true;                     // progress lines to stdout as well as log.txt
 };
 
-// Builds the parts and probes of a resolved scene without running it (what `halfeti check` does beyond the
-// schema): reads the files the scene names and cross-checks keys that depend on each other.
-Parts build_parts(const scene::Scene& scene, MPI_Comm comm);
+// Reads what a resolved scene names without building the heavy parts (what `halfeti check` does beyond the
+// schema): ground motion (its record file), part parameters with their cross-checks, probes.
+void build_parameters(const scene::Scene& scene, Parts& parts);
 
 class Simulation {
  public:
   Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options);
   ~Simulation();
 
-  // Runs to the end time. On a numerical failure it writes summary.json (status "numerical_failure") and
-  // rethrows; the caller turns the error into one line and an exit status.
+  // Runs to the end time. On a numerical failure it writes a checkpoint and summary.json (status
+  // "numerical_failure") and rethrows; the caller turns the error into one line and an exit status.
   void run();
 
   const std::string& out_dir() const { return out_dir_; }
 
  private:
-  void sample_probes(double t);
-  void write_summary(const std::string& status, double wall);
-  std::string progress_line(double t, double dt, double wall) const;
+  void announce();
+  double advance(double remaining);  // one step of every part; returns the step taken
+  void sample(double t);
+  void write_fields(double t);
+  void write_checkpoint(const std::string& label);
+  void write_summary(const std::string& status, double wall, double loop_wall);
+  std::string progress_line(double dt, double wall) const;
+  HealthLog health_events() const;
 
   MPI_Comm comm_;
   int rank_ = 0, size_ = 1;
@@ -52,12 +57,13 @@ class Simulation {
   std::string out_dir_;
   Parts parts_;
   std::vector<ProbeColumn> probes_;
-  std::unique_ptr<class ProbeWriterHolder> probe_out_;
+  std::unique_ptr<io::ProbeWriter> probe_out_;
   std::unique_ptr<io::RunLog> log_;
+  std::unique_ptr<io::FieldSeries> fluid_fields_, checkpoints_;
   PhaseTimers timers_;
-  HealthLog health_;
   double t_ = 0.0;
   long long steps_ = 0;
+  double initial_mass_ = 0.0, max_density_variation_ = 0.0;
 };
 
 }  // namespace halfeti::app
