@@ -1,10 +1,12 @@
 #include "halfeti/app/commands.hpp"
 
 #include <iostream>
+#include <sstream>
 
 #include "halfeti/app/cli.hpp"
 #include "halfeti/app/scene_schema.hpp"
 #include "halfeti/app/simulation.hpp"
+#include "halfeti/cable/cable_tool.hpp"
 #include "halfeti/core/error.hpp"
 #include "halfeti/core/scene.hpp"
 
@@ -24,8 +26,14 @@ int execute(const std::vector<std::string>& args, MPI_Comm comm) {
     case Command::Kind::kReference:
       if (rank == 0) std::cout << scene::reference_markdown(*scene_schema(), "halfeti scene reference");
       return 0;
-    case Command::Kind::kCable:
-      HALFETI_USER_ERROR("'halfeti cable' is not available in this build");
+    case Command::Kind::kCable: {
+      // A serial design tool: rank 0 answers, the others agree on the outcome.
+      std::ostringstream out;
+      int status = 0;
+      if (rank == 0) status = cable::run_cable_tool(cmd.tool_args, out);
+      if (rank == 0) std::cout << out.str();
+      return status;
+    }
     case Command::Kind::kCheck: {
       scene::Scene s = scene::load_scene(cmd.scene, cmd.overrides, *scene_schema(), comm);
       Parts parts;

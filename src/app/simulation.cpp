@@ -228,6 +228,7 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
   j.set("halfeti", kVersion);
   j.set("scene", root.section("scene").string("name"));
   j.set("scene_file", scene_.file);
+  if (root.section("scene").has("description")) j.set("description", root.section("scene").string("description"));
   j.set("ranks", size_);
   j.set("particles", particles);
   j.set("structure_dofs", 0);

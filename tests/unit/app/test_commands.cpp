@@ -109,3 +109,12 @@ TEST(Commands, ProbeKindsComeFromTheRegistry) {
   EXPECT_EQ(kind->choices(), names);
   for (const auto& n : names) EXPECT_EQ(schema->variants().count(n), 1u) << n;
 }
+
+TEST(Commands, SceneReferencePageIsCurrent) {
+  // docs/scene-reference.md is generated from the schema; regenerate with
+  //   build/src/app/halfeti reference > docs/scene-reference.md
+  ASSERT_EQ(status_of("reference"), 0);
+  const std::string generated = file_text(kDir + "/out.txt");
+  const std::string checked_in = file_text(std::string(HALFETI_SOURCE_DIR) + "/docs/scene-reference.md");
+  EXPECT_EQ(generated, checked_in) << "docs/scene-reference.md is stale: regenerate it (see the comment above)";
+}
