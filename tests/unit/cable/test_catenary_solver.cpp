@@ -180,6 +180,7 @@ TEST(CatenarySolver, RandomGeometriesFromDeepSlackToTautAllConverge) {
   int slack = 0, taut = 0, near_vertical = 0, worst_iterations = 0;
   double worst_residual = 0.0;
   double worst_tangent = 0.0;
+  int tangent_checks = 0;
   Eigen::Vector2d previous(1.0, 1.0);
   for (int i = 0; i < n; ++i) {
     const double l0 = std::pow(10.0, -2.0 + 4.0 * unit(rng));
@@ -213,10 +214,12 @@ TEST(CatenarySolver, RandomGeometriesFromDeepSlackToTautAllConverge) {
     ASSERT_LT(residual, 1e-9) << "case " << i << " span " << span.transpose() << " L0 " << l0 << " EA " << ea
                               << " w " << w;
     ASSERT_TRUE(s.tangent.allFinite()) << "case " << i;
-    if (i % 10 == 1 && ratio > 0.05) {  // tangent against differences, away from the vertical fold
+    if ((i % 5 == 1 || i % 5 == 2) &&
+        ratio > 0.05) {  // tangent against differences, away from the vertical fold
       const Eigen::Vector4d x(end1.x(), end1.y(), end2.x(), end2.y());
       const double error = tangent_error(x, c);
       worst_tangent = std::max(worst_tangent, error);
+      ++tangent_checks;
       EXPECT_LT(error, 1e-4) << "case " << i;
     }
     ASSERT_GE(s.tension_end, 0.0);
@@ -224,8 +227,8 @@ TEST(CatenarySolver, RandomGeometriesFromDeepSlackToTautAllConverge) {
   RecordProperty("worst_residual", std::to_string(worst_residual));
   std::printf(
       "sweep: %d slack, %d taut (%d nearly vertical); worst relative residual %.2e, max %d iterations, "
-      "worst tangent difference %.2e\n",
-      slack, taut, near_vertical, worst_residual, worst_iterations, worst_tangent);
+      "worst tangent difference %.2e over %d\n",
+      slack, taut, near_vertical, worst_residual, worst_iterations, worst_tangent, tangent_checks);
   EXPECT_GT(slack, n / 2);
   EXPECT_GT(taut, n / 5);
 }
