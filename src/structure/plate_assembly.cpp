@@ -66,8 +66,8 @@ void PlateSolver::update_acceleration() {
   a_ = (u_ - u_n_ - dt_ * v_n_ - dt_ * dt_ * (0.5 - beta) * a_n_) / (beta * dt_ * dt_);
 }
 
-void PlateSolver::add_newton_system(Mat matrix, Vec rhs, PetscInt offset) {
-  ScopedTimer timer(timers_, "structure_assembly");
+template <typename ElementSink, typename NodalSink>
+void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& nodal_sink) {
   const bool inertia_in_residual = mode_ == Mode::kDynamic;
   const double stiffness_coefficient = mode_ == Mode::kInitialAcceleration ? 0.0 : 1.0;
   const double mass_coefficient = mode_ == Mode::kDynamic ? 1.0 / (params_.newmark.beta * dt_ * dt_)
@@ -76,14 +76,9 @@ void PlateSolver::add_newton_system(Mat matrix, Vec rhs, PetscInt offset) {
   if (inertia_in_residual) update_acceleration();
   residual_ = ramp_ * (load_factor_ * prescribed_loads_ + external_forces_ + body_forces_);
 
-  PetscInt block_size = 1;
-  HALFETI_PETSC_CALL(MatGetBlockSize(matrix, &block_size));
-  const bool blocked = block_size == 2 && offset % 2 == 0;
-
   Q9Vector force;
   Q9Matrix tangent;
   RowMajor18 element_matrix;
-  PetscInt rows[kQ9Dofs];
   for (std::size_t e = 0; e < mesh_.elements.size(); ++e) {
     const auto& nodes = mesh_.elements[e];
     const Q9Coordinates x = current(static_cast<int>(e));
@@ -104,16 +99,7 @@ void PlateSolver::add_newton_system(Mat matrix, Vec rhs, PetscInt offset) {
       }
       residual_.segment<2>(2 * nodes[a]) -= force.segment<2>(2 * a) + inertia;
     }
-    // Negative indices make PETSc skip the clamped rows and columns.
-    if (blocked) {
-      for (int a = 0; a < kQ9Nodes; ++a) rows[a] = clamped_[nodes[a]] ? -1 : nodes[a] + offset / 2;
-      HALFETI_PETSC_CALL(MatSetValuesBlocked(matrix, kQ9Nodes, rows, kQ9Nodes, rows, element_matrix.data(),
-                                             ADD_VALUES));
-    } else {
-      for (int a = 0; a < kQ9Nodes; ++a)
-        for (int c = 0; c < 2; ++c) rows[2 * a + c] = clamped_[nodes[a]] ? -1 : 2 * nodes[a] + c + offset;
-      HALFETI_PETSC_CALL(MatSetValues(matrix, kQ9Dofs, rows, kQ9Dofs, rows, element_matrix.data(), ADD_VALUES));
-    }
+    element_sink(static_cast<int>(e), element_matrix.data());
   }
 
   // Nodal elements (cables): their force is internal (enters as F), their tangent adds to K.
@@ -127,41 +113,135 @@ void PlateSolver::add_newton_system(Mat matrix, Vec rhs, PetscInt offset) {
     const int k = 2 * static_cast<int>(nodes.size());
     HALFETI_CHECK(ne_force.size() == k && ne_tangent.rows() == k && ne_tangent.cols() == k,
                   "nodal element returned force/tangent of the wrong size");
-    std::vector<PetscInt> idx(k);
+    std::vector<int> dofs(k);
     for (std::size_t a = 0; a < nodes.size(); ++a) {
       residual_.segment<2>(2 * nodes[a]) -= ne_force.segment<2>(2 * a);
-      for (int c = 0; c < 2; ++c) idx[2 * a + c] = clamped_[nodes[a]] ? -1 : 2 * nodes[a] + c + offset;
+      for (int c = 0; c < 2; ++c) dofs[2 * a + c] = clamped_[nodes[a]] ? -1 : 2 * nodes[a] + c;
     }
-    const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rm =
+    const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> values =
         stiffness_coefficient * ne_tangent;
-    HALFETI_PETSC_CALL(MatSetValues(matrix, k, idx.data(), k, idx.data(), rm.data(), ADD_VALUES));
+    nodal_sink(dofs, values.data());
   }
+  for (int n : mesh_.clamped_nodes) residual_.segment<2>(2 * n).setZero();
+  residual_norm_ = residual_.norm();
+  if (first_residual_norm_ < 0.0) first_residual_norm_ = residual_norm_;
+}
 
-  for (int n = 0; n < node_count(); ++n) {
-    if (!clamped_[n]) continue;
-    residual_.segment<2>(2 * n).setZero();
+void PlateSolver::add_newton_system(Mat matrix, Vec rhs, PetscInt offset) {
+  ScopedTimer timer(timers_, "structure_assembly");
+  PetscInt block_size = 1;
+  HALFETI_PETSC_CALL(MatGetBlockSize(matrix, &block_size));
+  const bool blocked = block_size == 2 && offset % 2 == 0;
+  auto element_sink = [&](int e, const double* values) {
+    const auto& nodes = mesh_.elements[e];
+    PetscInt rows[kQ9Dofs];
+    // Negative indices make PETSc skip the clamped rows and columns.
+    if (blocked) {
+      for (int a = 0; a < kQ9Nodes; ++a) rows[a] = clamped_[nodes[a]] ? -1 : nodes[a] + offset / 2;
+      HALFETI_PETSC_CALL(MatSetValuesBlocked(matrix, kQ9Nodes, rows, kQ9Nodes, rows, values, ADD_VALUES));
+    } else {
+      for (int a = 0; a < kQ9Nodes; ++a)
+        for (int c = 0; c < 2; ++c) rows[2 * a + c] = clamped_[nodes[a]] ? -1 : 2 * nodes[a] + c + offset;
+      HALFETI_PETSC_CALL(MatSetValues(matrix, kQ9Dofs, rows, kQ9Dofs, rows, values, ADD_VALUES));
+    }
+  };
+  auto nodal_sink = [&](const std::vector<int>& dofs, const double* values) {
+    std::vector<PetscInt> idx(dofs.size());
+    for (std::size_t i = 0; i < dofs.size(); ++i) idx[i] = dofs[i] < 0 ? -1 : dofs[i] + offset;
+    const PetscInt k = static_cast<PetscInt>(idx.size());
+    HALFETI_PETSC_CALL(MatSetValues(matrix, k, idx.data(), k, idx.data(), values, ADD_VALUES));
+  };
+  compute_newton_terms(element_sink, nodal_sink);
+  for (int n : mesh_.clamped_nodes)
     for (int c = 0; c < 2; ++c) {
       const PetscInt row = 2 * n + c + offset;
       HALFETI_PETSC_CALL(MatSetValue(matrix, row, row, 1.0, ADD_VALUES));
     }
-  }
   if (rhs != nullptr) {
     std::vector<PetscInt> idx(dof_count());
     for (int i = 0; i < dof_count(); ++i) idx[i] = i + offset;
     HALFETI_PETSC_CALL(VecSetValues(rhs, dof_count(), idx.data(), residual_.data(), ADD_VALUES));
   }
-  residual_norm_ = residual_.norm();
-  if (first_residual_norm_ < 0.0) first_residual_norm_ = residual_norm_;
+}
+
+void PlateSolver::build_scatter_map() {
+  element_scatter_.clear();
+  clamped_diagonal_.clear();
+  PetscBool is_seqaij = PETSC_FALSE;
+  HALFETI_PETSC_CALL(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(matrix_.get()), MATSEQAIJ, &is_seqaij));
+  if (!is_seqaij) return;
+  // Fix the pattern with one pass of the general path, then look every entry up once.
+  mode_ = Mode::kStatic;
+  HALFETI_PETSC_CALL(MatZeroEntries(matrix_.get()));
+  add_newton_system(matrix_.get(), nullptr, 0);
+  HALFETI_PETSC_CALL(MatAssemblyBegin(matrix_.get(), MAT_FINAL_ASSEMBLY));
+  HALFETI_PETSC_CALL(MatAssemblyEnd(matrix_.get(), MAT_FINAL_ASSEMBLY));
+  HALFETI_PETSC_CALL(MatSetOption(matrix_.get(), MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE));
+  PetscInt n = 0;
+  const PetscInt *ia = nullptr, *ja = nullptr;
+  PetscBool done = PETSC_FALSE;
+  HALFETI_PETSC_CALL(MatGetRowIJ(matrix_.get(), 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
+  HALFETI_CHECK(done, "MatGetRowIJ did not return the SeqAIJ structure");
+  auto position = [&](PetscInt row, PetscInt col) {
+    const PetscInt* hit = std::lower_bound(ja + ia[row], ja + ia[row + 1], col);
+    HALFETI_CHECK(hit != ja + ia[row + 1] && *hit == col, "entry (" << row << ", " << col << ") not in pattern");
+    return static_cast<PetscInt>(hit - ja);
+  };
+  element_scatter_.reserve(mesh_.elements.size() * kQ9Dofs * kQ9Dofs);
+  for (const auto& nodes : mesh_.elements)
+    for (int r = 0; r < kQ9Dofs; ++r)
+      for (int c = 0; c < kQ9Dofs; ++c) {
+        const int rn = nodes[r / 2], cn = nodes[c / 2];
+        element_scatter_.push_back(clamped_[rn] || clamped_[cn] ? -1
+                                                                 : position(2 * rn + r % 2, 2 * cn + c % 2));
+      }
+  for (int node : mesh_.clamped_nodes)
+    for (int c = 0; c < 2; ++c) clamped_diagonal_.push_back(position(2 * node + c, 2 * node + c));
+  HALFETI_PETSC_CALL(MatRestoreRowIJ(matrix_.get(), 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
 }
 
 void PlateSolver::assemble_newton_system() {
-  if (matrix_dirty_) build_matrix();
-  HALFETI_PETSC_CALL(MatZeroEntries(matrix_.get()));
-  HALFETI_PETSC_CALL(VecSet(rhs_.get(), 0.0));
-  add_newton_system(matrix_.get(), rhs_.get(), 0);
+  if (matrix_dirty_) {
+    const Mode mode = mode_;
+    build_matrix();
+    build_scatter_map();
+    mode_ = mode;
+  }
+  Mat a = matrix_.get();
+  if (element_scatter_.empty()) {
+    HALFETI_PETSC_CALL(MatZeroEntries(a));
+    HALFETI_PETSC_CALL(VecSet(rhs_.get(), 0.0));
+    add_newton_system(a, rhs_.get(), 0);
+  } else {
+    ScopedTimer timer(timers_, "structure_assembly");
+    PetscScalar* values = nullptr;
+    HALFETI_PETSC_CALL(MatZeroEntries(a));
+    HALFETI_PETSC_CALL(MatSeqAIJGetArray(a, &values));
+    auto element_sink = [&](int e, const double* m) {
+      const PetscInt* where = element_scatter_.data() + static_cast<std::size_t>(e) * kQ9Dofs * kQ9Dofs;
+      for (int q = 0; q < kQ9Dofs * kQ9Dofs; ++q)
+        if (where[q] >= 0) values[where[q]] += m[q];
+    };
+    std::vector<std::pair<std::vector<PetscInt>, std::vector<double>>> nodal;
+    auto nodal_sink = [&](const std::vector<int>& dofs, const double* m) {
+      nodal.emplace_back(std::vector<PetscInt>(dofs.begin(), dofs.end()),
+                         std::vector<double>(m, m + dofs.size() * dofs.size()));
+    };
+    compute_newton_terms(element_sink, nodal_sink);
+    for (PetscInt d : clamped_diagonal_) values[d] = 1.0;
+    HALFETI_PETSC_CALL(MatSeqAIJRestoreArray(a, &values));
+    for (const auto& [idx, m] : nodal) {
+      const PetscInt k = static_cast<PetscInt>(idx.size());
+      HALFETI_PETSC_CALL(MatSetValues(a, k, idx.data(), k, idx.data(), m.data(), ADD_VALUES));
+    }
+    PetscScalar* rhs = nullptr;
+    HALFETI_PETSC_CALL(VecGetArray(rhs_.get(), &rhs));
+    std::copy(residual_.data(), residual_.data() + dof_count(), rhs);
+    HALFETI_PETSC_CALL(VecRestoreArray(rhs_.get(), &rhs));
+  }
   ScopedTimer timer(timers_, "structure_assembly");
-  HALFETI_PETSC_CALL(MatAssemblyBegin(matrix_.get(), MAT_FINAL_ASSEMBLY));
-  HALFETI_PETSC_CALL(MatAssemblyEnd(matrix_.get(), MAT_FINAL_ASSEMBLY));
+  HALFETI_PETSC_CALL(MatAssemblyBegin(a, MAT_FINAL_ASSEMBLY));
+  HALFETI_PETSC_CALL(MatAssemblyEnd(a, MAT_FINAL_ASSEMBLY));
   HALFETI_PETSC_CALL(VecAssemblyBegin(rhs_.get()));
   HALFETI_PETSC_CALL(VecAssemblyEnd(rhs_.get()));
 }

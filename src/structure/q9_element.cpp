@@ -80,26 +80,40 @@ void HyperelasticQ9::accumulate(const Q9Point& p, const Q9Coordinates& x, Energy
   for (int a = 0; a < kQ9Nodes; ++a) force.segment<2>(2 * a) += nodal.row(a).transpose();
   if constexpr (!kTangent) return;
 
-  // Material part B^T D B, with B the variation of E_v = [E11, E22, 2 E12] at the current F.
-  Eigen::Matrix<double, 3, kQ9Dofs> b;
-  for (int a = 0; a < kQ9Nodes; ++a) {
-    const double g0 = g(a, 0), g1 = g(a, 1);
-    for (int i = 0; i < 2; ++i) {
-      b(0, 2 * a + i) = f(i, 0) * g0;
-      b(1, 2 * a + i) = f(i, 1) * g1;
-      b(2, 2 * a + i) = f(i, 0) * g1 + f(i, 1) * g0;
-    }
-  }
-  const Eigen::Matrix<double, 3, kQ9Dofs> db = w * r.tangent * b;
-  tangent->noalias() += b.transpose() * db;
-  // Geometric part: (dN_a^T S dN_b) I.
-  const Eigen::Matrix<double, kQ9Nodes, kQ9Nodes> geometric = w * g * s * g.transpose();
-  for (int a = 0; a < kQ9Nodes; ++a)
-    for (int c = 0; c < kQ9Nodes; ++c) {
-      (*tangent)(2 * a, 2 * c) += geometric(a, c);
-      (*tangent)(2 * a + 1, 2 * c + 1) += geometric(a, c);
+  // Tangent in the mixed form K_ab(i, k) = w sum_JL dN_a/dX_J A_iJkL dN_b/dX_L with
+  //   A_iJkL = F_iI F_kK D_IJKL + delta_ik S_JL   (material + geometric stiffness),
+  // A stored as a symmetric 4x4 over the pairs (iJ) = 2 i + J. About 4x fewer operations than B^T D B with a
+  // dense 3 x 18 B; only the upper block triangle (b >= a) is accumulated, the rest is mirrored by the caller.
+  static constexpr int kVoigt[2][2] = {{0, 2}, {2, 1}};
+  double a4[4][4];
+  for (int i = 0; i < 2; ++i)
+    for (int jj = 0; jj < 2; ++jj)
+      for (int k = 0; k < 2; ++k)
+        for (int ll = 0; ll < 2; ++ll) {
+          double sum = i == k ? s(jj, ll) : 0.0;
+          for (int ii = 0; ii < 2; ++ii)
+            for (int kk = 0; kk < 2; ++kk) sum += f(i, ii) * f(k, kk) * r.tangent(kVoigt[ii][jj], kVoigt[kk][ll]);
+          a4[2 * i + jj][2 * k + ll] = w * sum;
+        }
+  double t[kQ9Nodes][4][2];  // t_b(iJ, k) = sum_L A_iJkL dN_b/dX_L
+  for (int b = 0; b < kQ9Nodes; ++b)
+    for (int q = 0; q < 4; ++q)
+      for (int k = 0; k < 2; ++k) t[b][q][k] = a4[q][2 * k] * g(b, 0) + a4[q][2 * k + 1] * g(b, 1);
+  for (int b = 0; b < kQ9Nodes; ++b)
+    for (int a = 0; a <= b; ++a) {
+      const double g0 = g(a, 0), g1 = g(a, 1);
+      for (int k = 0; k < 2; ++k)
+        for (int i = 0; i < 2; ++i) (*tangent)(2 * a + i, 2 * b + k) += g0 * t[b][2 * i][k] + g1 * t[b][2 * i + 1][k];
     }
 }
+
+namespace {
+// Mirror the upper block triangle accumulated by accumulate<true>() into the lower one.
+void mirror_upper_blocks(Q9Matrix& k) {
+  for (int b = 0; b < kQ9Nodes; ++b)
+    for (int a = 0; a < b; ++a) k.block<2, 2>(2 * b, 2 * a) = k.block<2, 2>(2 * a, 2 * b).transpose();
+}
+}  // namespace
 
 double HyperelasticQ9::energy(const Q9Geometry& g, const Q9Coordinates& x) const {
   double e = 0.0;
@@ -136,6 +150,7 @@ void HyperelasticQ9::internal_force_and_tangent(const Q9Geometry& g, const Q9Coo
   } else {
     for (const auto& p : g.full) accumulate<true>(p, x, EnergyPart::kAll, force, &tangent);
   }
+  mirror_upper_blocks(tangent);
 }
 
 Eigen::Matrix<double, kQ9Nodes, kQ9Nodes> HyperelasticQ9::scalar_mass(const Q9Geometry& g, double density) {

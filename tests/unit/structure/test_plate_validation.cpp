@@ -1,0 +1,191 @@
+// Validation of the plate against beam theory (LABELS validation): static tip deflection and mesh convergence,
+// the large-deflection elastica, no locking at nu = 0.49, the first natural frequency, energy conservation of the
+// trapezoidal rule, and the cost of one Newton iteration. Figures are printed for docs/structure.md.
+#include <gtest/gtest.h>
+#include <petscsys.h>
+
+#include <chrono>
+#include <cstdio>
+
+#include "plate_fixtures.hpp"
+
+namespace hs = halfeti::structure;
+using hs::testing::paper_plate;
+
+namespace {
+
+double now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// Horizontal dead load `load` [N/m] spread uniformly over the top edge; returns the tip (top centre) displacement.
+Eigen::Vector2d static_tip(hs::PlateSolver& s, double load, int increments = 1) {
+  s.clear_loads();
+  s.add_edge_load("top", Eigen::Vector2d(load / s.parameters().geometry.thickness, 0.0));
+  s.solve_static(0.0, increments);
+  return s.displacement(s.mesh().node("top_centre"));
+}
+
+// The elastica of a cantilever under a dead tip load perpendicular to its axis, alpha = P L^2 / EI:
+// theta'' = -alpha cos(theta), theta(0) = 0, theta'(1) = 0 (s = arc length / L). Shooting on theta'(0) with
+// RK4 (2000 steps) and bisection; returns the tip's (lateral, axial shortening) displacement / L.
+Eigen::Vector2d elastica_tip(double alpha) {
+  auto shoot = [alpha](double curvature0, Eigen::Vector2d* tip) {
+    const int n = 2000;
+    const double h = 1.0 / n;
+    // state: theta, theta', x (lateral), y (axial)
+    Eigen::Vector4d z(0.0, curvature0, 0.0, 0.0);
+    auto rhs = [alpha](const Eigen::Vector4d& q) {
+      return Eigen::Vector4d(q(1), -alpha * std::cos(q(0)), std::sin(q(0)), std::cos(q(0)));
+    };
+    for (int i = 0; i < n; ++i) {
+      const Eigen::Vector4d k1 = rhs(z), k2 = rhs(z + 0.5 * h * k1), k3 = rhs(z + 0.5 * h * k2),
+                            k4 = rhs(z + h * k3);
+      z += h / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4);
+    }
+    if (tip) *tip = Eigen::Vector2d(z(2), 1.0 - z(3));
+    return z(1);  // theta'(1), zero at the solution
+  };
+  double lo = 0.0, hi = alpha;  // theta'(0) = M(0)/EI lies in (0, alpha]
+  for (int it = 0; it < 200; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (shoot(mid, nullptr) > 0.0 ? hi : lo) = mid;
+  }
+  Eigen::Vector2d tip;
+  shoot(0.5 * (lo + hi), &tip);
+  return tip;
+}
+
+TEST(PlateValidation, SmallLoadCantileverConvergence) {
+  const double load = 1e-3;  // N/m, tip deflection ~1e-4 L (linear regime)
+  std::printf("\nmesh (across x along)  elements  dofs  tip/EB - 1   tip/Timoshenko - 1   static solve [ms]\n");
+  struct Row {
+    int across, along;
+  };
+  double error_paper = 0.0, error_fine = 0.0;
+  for (Row r : {Row{1, 20}, Row{1, 40}, Row{2, 40}, Row{2, 60}, Row{4, 30}, Row{4, 60}, Row{8, 120}}) {
+    const auto p = paper_plate(r.across, r.along);
+    hs::PlateSolver s(PETSC_COMM_WORLD, p);
+    const double t0 = now();
+    const double tip = static_tip(s, load).x();
+    const double cost = now() - t0;
+    const double eb = hs::testing::euler_bernoulli_tip(p, load);
+    const double shear = load * p.geometry.height / (5.0 / 6.0 * p.material.youngs_modulus /
+                                                     (2 * (1 + p.material.poisson_ratio)) * p.geometry.thickness);
+    std::printf("%2d x %-3d               %5d  %5d  %+.5f     %+.5f             %.2f\n", r.across, r.along,
+                r.across * r.along, s.dof_count(), tip / eb - 1, tip / (eb + shear) - 1, 1e3 * cost);
+    if (r.across == 2 && r.along == 60) error_paper = tip / eb - 1;
+    if (r.across == 8) error_fine = tip / eb - 1;
+  }
+  EXPECT_LT(std::abs(error_paper), 0.01);
+  EXPECT_LT(std::abs(error_fine), 0.01);
+}
+
+TEST(PlateValidation, NearlyIncompressibleDoesNotLock) {
+  const double load = 1e-3;
+  for (bool reduced : {true, false}) {
+    auto p = paper_plate(2, 60, 0.49);
+    p.material.selective_reduced_integration = reduced;
+    hs::PlateSolver s(PETSC_COMM_WORLD, p);
+    const double ratio = static_tip(s, load).x() / hs::testing::euler_bernoulli_tip(p, load);
+    std::printf("nu = 0.49, 2 x 60, %s integration: tip / EB - 1 = %+.5f\n", reduced ? "selective" : "full", ratio - 1);
+    if (reduced) {
+      EXPECT_NEAR(ratio, 1.0, 0.02);
+    }
+  }
+  auto p = paper_plate(1, 30, 0.49);  // one element through the thickness
+  hs::PlateSolver s(PETSC_COMM_WORLD, p);
+  const double ratio = static_tip(s, load).x() / hs::testing::euler_bernoulli_tip(p, load);
+  std::printf("nu = 0.49, 1 x 30, selective: tip / EB - 1 = %+.5f\n", ratio - 1);
+  EXPECT_NEAR(ratio, 1.0, 0.02);
+}
+
+TEST(PlateValidation, LargeDeflectionMatchesElastica) {
+  const double alpha = 2.0;
+  const Eigen::Vector2d reference = elastica_tip(alpha);
+  for (auto mesh : {std::pair{2, 60}, std::pair{4, 120}}) {
+    const auto p = paper_plate(mesh.first, mesh.second);
+    hs::PlateSolver s(PETSC_COMM_WORLD, p);
+    const double l = p.geometry.height;
+    const double load = alpha * hs::testing::bending_stiffness(p) / (l * l);
+    const Eigen::Vector2d tip = static_tip(s, load, 4) / l;
+    std::printf("elastica alpha = %.1f: reference lateral %.5f L, shortening %.5f L; %d x %d: lateral %.5f L "
+                "(%+.4f), shortening %.5f L (%+.4f), Newton iterations %d\n",
+                alpha, reference.x(), reference.y(), mesh.first, mesh.second, tip.x(), tip.x() / reference.x() - 1,
+                -tip.y(), -tip.y() / reference.y() - 1, s.last_step().newton_iterations);
+    EXPECT_NEAR(tip.x() / reference.x(), 1.0, 0.01);
+    EXPECT_NEAR(-tip.y() / reference.y(), 1.0, 0.02);
+  }
+}
+
+// Releases the plate from a static bend under a tip load and integrates `periods` first-mode periods with
+// `steps_per_period` trapezoidal steps. Returns (first frequency from downward zero crossings of the tip,
+// worst relative drift of strain + kinetic energy, microseconds per step).
+Eigen::Vector3d free_vibration(const hs::StructureParameters& p, double tip_load, int periods, int steps_per_period) {
+  hs::PlateSolver s(PETSC_COMM_WORLD, p);
+  const double period = 1.0 / hs::testing::first_frequency(p);
+  static_tip(s, tip_load);
+  s.clear_loads();
+  s.initialise_acceleration(0.0);
+  const int tip = s.mesh().node("top_centre");
+  const double dt = period / steps_per_period;
+  const double e0 = s.strain_energy() + s.kinetic_energy();
+  double worst = 0.0, last_x = s.displacement(tip).x(), t = 0.0;
+  std::vector<double> crossings;
+  const int steps = periods * steps_per_period;
+  const double t0 = now();
+  for (int n = 0; n < steps; ++n) {
+    s.step(t, dt);
+    t += dt;
+    const double x = s.displacement(tip).x();
+    if (last_x > 0.0 && x <= 0.0) crossings.push_back(t - dt * x / (x - last_x));
+    last_x = x;
+    worst = std::max(worst, std::abs(s.strain_energy() + s.kinetic_energy() - e0) / e0);
+  }
+  const double cost = (now() - t0) / steps;
+  const double f = (crossings.size() - 1) / (crossings.back() - crossings.front());
+  return {f, worst, 1e6 * cost};
+}
+
+TEST(PlateValidation, FirstNaturalFrequency) {
+  const auto p = paper_plate(2, 60);
+  const double f_ref = hs::testing::first_frequency(p);
+  const Eigen::Vector3d r = free_vibration(p, 1e-3, 6, 100);
+  std::printf("first frequency, 2 x 60: FE %.5f Hz, 1.875^2 sqrt(EI/(rho A L^4))/(2 pi) = %.5f Hz (%+.4f), "
+              "%.0f us per step\n", r(0), f_ref, r(0) / f_ref - 1, r(2));
+  EXPECT_NEAR(r(0) / f_ref, 1.0, 0.02);
+}
+
+TEST(PlateValidation, TrapezoidalRuleConservesEnergy) {
+  // Tip amplitude 0.075% of the height. The trapezoidal rule conserves energy exactly only for linear systems;
+  // here the drift grows as amplitude^2 (geometric nonlinearity) and falls steeply with dt: measured over 10
+  // periods at T/40, 0.075% -> 1e-7, 0.23% -> 8e-7, 0.75% -> 9e-6 (docs/structure.md). Much smaller amplitudes
+  // hit the round-off of the energy itself (I1 - 3 and ln J cancel to ~1e-16 / strain relative).
+  const auto p = paper_plate(1, 20);
+  const Eigen::Vector3d r = free_vibration(p, 0.01, 100, 40);
+  std::printf("trapezoidal rule, 1 x 20, 100 periods at T/40: max |E - E0| / E0 = %.2e, %.0f us per step\n", r(1),
+              r(2));
+  EXPECT_LT(r(1), 1e-6);
+}
+
+TEST(PlateValidation, NewtonIterationCost) {
+  const auto p = paper_plate(2, 60);
+  hs::PlateSolver s(PETSC_COMM_WORLD, p);
+  s.add_edge_load("top", Eigen::Vector2d(1.0, 0.0));
+  s.begin_step(0.0, 1.6e-5);  // the paper's maximum time step
+  const int n = 2000;
+  double assembly = 0.0, solve = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double t0 = now();
+    s.assemble_newton_system();
+    const double t1 = now();
+    s.solve_newton_increment();
+    assembly += t1 - t0;
+    solve += now() - t1;
+  }
+  std::printf("one Newton iteration, 2 x 60 Q9 (%d dofs): assembly %.1f us + KSP (LU) %.1f us = %.1f us\n",
+              s.dof_count(), 1e6 * assembly / n, 1e6 * solve / n, 1e6 * (assembly + solve) / n);
+  SUCCEED();
+}
+
+}  // namespace
