@@ -1,5 +1,6 @@
 // Unstretched length for a prescribed end tension: the inverse problem of the design tool
 // (`--tension-stress`).
+#include <algorithm>
 #include <cmath>
 
 #include "halfeti/cable/catenary.hpp"
@@ -37,15 +38,44 @@ double unstretched_length_for_end_tension(const Eigen::Vector2d& end1, const Eig
   }
   double hi = lo;
   double f_hi = f_lo;
-  double previous = f_lo;
+  double before = lo;  // the sample before `hi`
   for (int k = 0; f_hi > 0.0; ++k) {
-    hi += 0.02 * (1 << std::min(k, 10));
-    f_hi = excess(hi);
-    if (f_hi > previous || k > 200)
-      HALFETI_USER_ERROR("no unstretched length gives an end tension of "
-                         << end_tension << " N: the cable's own weight keeps it above about "
-                         << previous + end_tension << " N for this span");
-    previous = f_hi;
+    const double next = hi + 0.02 * (1 << std::min(k, 10));
+    const double f_next = excess(next);
+    if (f_next > f_hi || k > 200) {
+      // Past the minimum of the end tension, still above the target: locate the minimum (golden section on
+      // [before, next]) and go on from it if it reaches the target.
+      double a = before, b = next;
+      const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+      double c = b - ratio * (b - a), d = a + ratio * (b - a);
+      double fc = excess(c), fd = excess(d);
+      for (int it = 0; it < 100 && b - a > 1e-10 && std::min(fc, fd) > 0.0; ++it) {
+        if (fc < fd) {
+          b = d;
+          d = c;
+          fd = fc;
+          c = b - ratio * (b - a);
+          fc = excess(c);
+        } else {
+          a = c;
+          c = d;
+          fc = fd;
+          d = a + ratio * (b - a);
+          fd = excess(d);
+        }
+      }
+      const double f_min = std::min(fc, fd);
+      if (f_min > 0.0)
+        HALFETI_USER_ERROR("no unstretched length gives an end tension of "
+                           << end_tension << " N: the cable's own weight keeps it at or above "
+                           << f_min + end_tension << " N for this span");
+      hi = fc < fd ? c : d;
+      f_hi = f_min;
+      break;
+    }
+    before = hi;
+    hi = next;
+    f_hi = f_next;
   }
   // Illinois false position on [lo, hi].
   int side = 0;

@@ -233,6 +233,19 @@ TEST(CatenarySolver, RandomGeometriesFromDeepSlackToTautAllConverge) {
   EXPECT_GT(taut, n / 5);
 }
 
+TEST(UnstretchedLength, InvertsTheEndTension) {
+  const Eigen::Vector2d a(0.0, 0.0), b(1.0, 0.3);
+  const double ea = 500.0, w = 2.0;
+  for (double tension : {1.9, 10.0, 300.0}) {
+    const double l0 = unstretched_length_for_end_tension(a, b, ea, w, tension);
+    const CatenarySolution s = solve_catenary(a, b, make_cable(l0, ea, w));
+    EXPECT_NEAR(s.tension_end, tension, 1e-10 * tension) << "T = " << tension;
+  }
+  // A heavy cable's end tension never falls below a positive minimum (1.8466 N here): less is a user error.
+  EXPECT_THROW(unstretched_length_for_end_tension(a, b, ea, w, 1.84), UserError);
+  EXPECT_THROW(unstretched_length_for_end_tension(a, b, ea, w, -1.0), UserError);
+}
+
 TEST(CatenarySolver, FailsLoudlyOnBadInput) {
   EXPECT_THROW(solve_catenary({0.0, 0.0}, {1.0, 0.0}, make_cable(0.0, 1.0, 1.0)), InternalError);
   EXPECT_THROW(solve_catenary({0.0, 0.0}, {NAN, 0.0}, make_cable(1.0, 1.0, 1.0)), InternalError);
