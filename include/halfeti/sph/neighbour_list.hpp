@@ -41,16 +41,17 @@ class NeighbourSearch {
  public:
   NeighbourSearch(const parallel::CellGrid& grid, const Kernel& kernel) : grid_(grid), kernel_(kernel) {}
 
-  // Binds fixed points (wall particles), searched by wall_pairs(); their index order is canonical.
-  void set_walls(const std::vector<double>& wx, const std::vector<double>& wy);
+  // Binds fixed points (set 0: wall particles, set 1: wall ghosts), searched by wall_pairs(); their index order
+  // is canonical.
+  void set_fixed_points(int set, const std::vector<double>& px, const std::vector<double>& py);
   void set_barriers(std::vector<Barrier> barriers) { barriers_ = std::move(barriers); }
   const std::vector<Barrier>& barriers() const { return barriers_; }
 
   // Fluid pairs for owned particles [0, n_owned) among all local particles [0, n_local).
   void fluid_pairs(const double* x, const double* y, const std::int64_t* gid, int n_owned, int n_local,
                    PairList& out);
-  // Wall particles within the support of each owned particle.
-  void wall_pairs(const double* x, const double* y, int n_owned, PairList& out) const;
+  // Fixed points of a set within the support of each owned particle (pairs across barriers are dropped).
+  void fixed_pairs(int set, const double* x, const double* y, int n_owned, PairList& out) const;
 
   // Minimum pair distance found by the last fluid_pairs() (for the spacing-collapse monitor).
   double min_distance() const { return min_distance_; }
@@ -61,8 +62,11 @@ class NeighbourSearch {
   parallel::CellGrid grid_;
   Kernel kernel_;
   std::vector<int> cell_start_, cell_items_, cell_of_;  // local particles binned by cell, then gid
-  std::vector<int> wall_start_, wall_items_;
-  std::vector<double> wx_, wy_;
+  struct FixedBins {
+    std::vector<int> start, items;
+    std::vector<double> x, y;
+  };
+  FixedBins fixed_[2];
   std::vector<Barrier> barriers_;
   double min_distance_ = 0.0;
 };

@@ -17,6 +17,19 @@ struct WallParticles {
   std::size_t size() const { return x.size(); }
 };
 
+// Virtual points behind the tank walls (a few rows at (m + 1/2) dx behind each wall particle, volume = the wall
+// particle's share times dx) on which the wall's pressure acts: they stand for the fluid the truncated kernel
+// misses: pressure continued hydrostatically (Adami et al. 2012) and velocity mirrored (free slip), so that still
+// water is in equilibrium next to a wall and a particle leaving a wall expands. They carry no state.
+struct WallGhosts {
+  std::vector<double> x, y, volume;
+  std::vector<double> nx, ny;  // normal of their wall (into the fluid)
+  std::size_t size() const { return x.size(); }
+};
+
+// Ghost rows behind the tank walls; depth = the kernel support.
+WallGhosts build_wall_ghosts(const FluidParams& p, double support);
+
 // Builds the tank walls (x = 0, x = L, y = 0, lid y = H if asked) and the internal walls. Tank walls extend
 // `extension` past the corners so that the repulsion stays a partition of unity there.
 WallParticles build_walls(const FluidParams& p, double extension);

@@ -1,0 +1,121 @@
+// The water: weakly compressible delta-SPH particles distributed over MPI ranks by cells (DESIGN.md, "One time
+// step", fluid part). One force evaluation per step; leap-frog in its kick-drift form:
+//   compute_forces()   halo, neighbours, density_gradient, forces (and dt)
+//   [caller may set extra_acceleration_x/y(): Delta C of eq. 4, per owned particle]
+//   advance()          integrate, health, rebalance, migrate
+// step() does both. Results are bitwise identical on any number of ranks.
+#pragma once
+
+#include <mpi.h>
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "halfeti/core/communicator.hpp"
+#include "halfeti/core/timers.hpp"
+#include "halfeti/excitation/ground_motion.hpp"
+#include "halfeti/parallel/cell_grid.hpp"
+#include "halfeti/parallel/halo_plan.hpp"
+#include "halfeti/sph/delta_sph.hpp"
+#include "halfeti/sph/health.hpp"
+#include "halfeti/sph/neighbour_list.hpp"
+#include "halfeti/sph/params.hpp"
+#include "halfeti/sph/walls.hpp"
+
+namespace halfeti::sph {
+
+class Fluid {
+ public:
+  // Collective over comm (duplicated). motion may be null (still tank); it must outlive the Fluid.
+  Fluid(MPI_Comm comm, const FluidParams& params, const excitation::GroundMotion* motion = nullptr);
+
+  void step();
+  void compute_forces();
+  void advance();
+
+  double time() const { return time_; }
+  long step_count() const { return step_; }
+  double dt() const { return dt_; }  // the step chosen by the last compute_forces()
+  double sound_speed() const { return c0_; }
+  double smoothing_length() const { return kernel_.h; }
+  const FluidParams& params() const { return params_; }
+  MPI_Comm comm() const { return comm_.get(); }
+
+  // Owned particles (for output); sizes = owned_count().
+  std::size_t owned_count() const { return static_cast<std::size_t>(n_owned_); }
+  long global_count() const { return n_global_; }
+  const std::vector<std::int64_t>& gid() const { return gid_; }  // (ghost rows may follow: use owned_count())
+  const std::vector<double>& x() const { return x_; }
+  const std::vector<double>& y() const { return y_; }
+  const std::vector<double>& vx() const { return vx_; }
+  const std::vector<double>& vy() const { return vy_; }
+  const std::vector<double>& rho() const { return rho_; }
+  std::vector<double> pressure() const;  // owned particles, eq. 9
+
+  // Delta C (eq. 4) hook: extra acceleration per owned particle, zeroed by compute_forces() and added by advance().
+  std::vector<double>& extra_acceleration_x() { return extra_ax_; }
+  std::vector<double>& extra_acceleration_y() { return extra_ay_; }
+  // Fluid pairs whose segment crosses one of these lines do not interact (added to the internal walls).
+  void set_barriers(const std::vector<Barrier>& extra);
+
+  // Probes: collective, same value on every rank, bitwise independent of the rank count.
+  // Kernel interpolation over fluid particles, first-order corrected (MLS; Shepard where the moments are singular).
+  double pressure_at(double x, double y) const;
+  std::array<double, 2> velocity_at(double x, double y) const;
+  double free_surface_elevation(double x) const;            // top fluid particle in |x_i - x| <= dx, + dx/2
+  double front_position(double y_max) const;                // max x of fluid particles below y_max, + dx/2
+  double total_mass() const;
+  double kinetic_energy() const;
+  double max_density_variation() const;                     // max |rho - rho0| / rho0
+
+  const PhaseTimers& timers() const { return timers_; }
+  const std::vector<HealthEvent>& health_events() const { return events_; }
+  // Number of owned particles per rank after the last migration (diagnostics of the balance).
+  const std::vector<int>& cell_owner() const { return owner_; }
+
+ private:
+  void initialise_particles();
+  void sort_owned_by_cell();
+  void exchange_halo();
+  void check_health();
+  void maybe_rebalance();
+  void migrate();
+  std::vector<long> global_cell_counts() const;
+  void warn(const std::string& kind, bool active, const std::string& message);
+
+  Communicator comm_;
+  int rank_ = 0, size_ = 1;
+  FluidParams params_;
+  const excitation::GroundMotion* motion_;
+  Kernel kernel_;
+  double c0_ = 0.0, dx_ = 0.0;
+  parallel::CellGrid grid_;
+  std::vector<int> owner_;  // cell -> rank
+  parallel::HaloPlan halo_plan_;
+  WallParticles walls_;
+  WallGhosts ghosts_;
+  NeighbourSearch search_;
+  PairList pairs_, wall_pairs_, ghost_pairs_;
+
+  // Local particles: [0, n_owned_) owned, then ghosts (after exchange_halo()).
+  int n_owned_ = 0, n_local_ = 0;
+  long n_global_ = 0;
+  std::vector<std::int64_t> gid_;
+  std::vector<double> x_, y_, vx_, vy_, rho_, mass_, p_;
+  std::vector<int> cell_;
+  std::vector<double> grad_rho_;
+  Rates rates_;
+  RateConstants constants_{};
+  std::vector<double> extra_ax_, extra_ay_;
+
+  double time_ = 0.0, dt_ = 0.0;
+  long step_ = 0;
+  bool forces_ready_ = false;
+  PhaseTimers timers_;
+  std::vector<HealthEvent> events_;
+  std::vector<std::string> active_warnings_;
+};
+
+}  // namespace halfeti::sph

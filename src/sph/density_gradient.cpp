@@ -1,0 +1,38 @@
+// Renormalised density gradient (eqs. 6-7).
+#include "halfeti/sph/delta_sph.hpp"
+
+#include <cmath>
+
+namespace halfeti::sph {
+
+void density_gradient(const ParticleView& pv, const PairList& pairs, std::vector<double>& grad_rho) {
+  grad_rho.assign(2 * static_cast<std::size_t>(pv.n_owned), 0.0);
+  for (int i = 0; i < pv.n_owned; ++i) {
+    // B = sum_j V_j grad_i W_ij (x) r_ji, so that sum_j V_j (f_j - f_i) grad_i W_ij = B grad f for linear f;
+    // L_i of eq. 7 is its inverse (written with grad_i W pointing from i towards j).
+    double b00 = 0, b01 = 0, b10 = 0, b11 = 0, sx = 0, sy = 0;
+    const double rhoi = pv.rho[i];
+    for_each_neighbour(pairs, i, [&](int j, int k) {
+      const double vj = pv.mass[j] / pv.rho[j];
+      const double gx = -pairs.f[k] * pairs.ex[k], gy = -pairs.f[k] * pairs.ey[k];  // grad_i W_ij
+      b00 += vj * gx * pairs.ex[k];
+      b01 += vj * gx * pairs.ey[k];
+      b10 += vj * gy * pairs.ex[k];
+      b11 += vj * gy * pairs.ey[k];
+      const double drho = (pv.rho[j] - rhoi) * vj;  // eq. 6
+      sx += drho * gx;
+      sy += drho * gy;
+    });
+    const double det = b00 * b11 - b01 * b10;
+    if (std::abs(det) < kRenormalisationMinDet) {  // near-singular L_i (eq. 7): plain SPH gradient
+      grad_rho[2 * i] = sx;
+      grad_rho[2 * i + 1] = sy;
+      continue;
+    }
+    // Solve B g = s (eq. 6 with L_i = B^-1, eq. 7)
+    grad_rho[2 * i] = (b11 * sx - b01 * sy) / det;
+    grad_rho[2 * i + 1] = (-b10 * sx + b00 * sy) / det;
+  }
+}
+
+}  // namespace halfeti::sph

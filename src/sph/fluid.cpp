@@ -1,0 +1,308 @@
+// The fluid's time step (DESIGN.md "One time step", fluid part) and its distribution over ranks.
+#include "halfeti/sph/fluid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "halfeti/core/error.hpp"
+#include "halfeti/parallel/decomposition.hpp"
+#include "halfeti/parallel/halo_plan.hpp"
+#include "halfeti/parallel/migration.hpp"
+#include "halfeti/sph/equation_of_state.hpp"
+
+namespace halfeti::sph {
+
+namespace {
+Kernel make_kernel(const FluidParams& p) {
+  Kernel k{p.kernel, p.h_over_dx * p.spacing};
+  k.gradient_scale = lattice_gradient_moment(k, p.spacing);
+  return k;
+}
+
+parallel::CellGrid make_grid(const FluidParams& p) {
+  // The tank plus a margin of one support radius on every side (wall extensions live there); cell = support.
+  const double s = 2.0 * p.h_over_dx * p.spacing;
+  return parallel::CellGrid::covering(-s, -s, p.tank_length + s, p.tank_height + s, s);
+}
+
+double auto_sound_speed(const FluidParams& p) {
+  if (p.sound_speed > 0.0) return p.sound_speed;
+  double depth = 0.0;
+  for (const auto& b : p.water) depth = std::max(depth, b.y1 + std::abs(b.surface_amplitude) - b.y0);
+  HALFETI_CHECK(depth > 0.0, "no water to size the sound speed on");
+  // eq. 10 with u_b = sqrt(g d) (long-wave speed), F = g + peak ground acceleration, l = d, aiming at half the
+  // allowed density variation so that the hydrostatic state alone stays clear of the 1% monitor.
+  return sound_speed_eq10(std::sqrt(p.gravity * depth), p.gravity + std::abs(p.peak_ground_acceleration), depth,
+                          0.5 * p.max_density_variation);
+}
+
+template <class T>
+void permute(std::vector<T>& v, const std::vector<int>& perm) {
+  std::vector<T> out(perm.size());
+  for (std::size_t k = 0; k < perm.size(); ++k) out[k] = v[perm[k]];
+  v.swap(out);
+}
+}  // namespace
+
+Fluid::Fluid(MPI_Comm comm, const FluidParams& params, const excitation::GroundMotion* motion)
+    : comm_(comm),
+      params_(params),
+      motion_(motion),
+      kernel_(make_kernel(params)),
+      grid_(make_grid(params)),
+      search_(grid_, kernel_) {
+  if (params.spacing <= 0.0) HALFETI_USER_ERROR("fluid spacing must be positive, got " << params.spacing);
+  if (params.water.empty()) HALFETI_USER_ERROR("the fluid needs at least one water block");
+  rank_ = comm_.rank();
+  size_ = comm_.size();
+  dx_ = params.spacing;
+  c0_ = auto_sound_speed(params);
+  walls_ = build_walls(params, kernel_.support());
+  ghosts_ = build_wall_ghosts(params, kernel_.support());
+  search_.set_fixed_points(0, walls_.x, walls_.y);
+  search_.set_fixed_points(1, ghosts_.x, ghosts_.y);
+  set_barriers({});
+  initialise_particles();
+}
+
+void Fluid::set_barriers(const std::vector<Barrier>& extra) {
+  std::vector<Barrier> all;
+  for (const auto& w : params_.internal_walls) all.push_back({w.xa, w.ya, w.xb, w.yb});
+  all.insert(all.end(), extra.begin(), extra.end());
+  search_.set_barriers(std::move(all));
+}
+
+void Fluid::initialise_particles() {
+  // Every rank lays out the same lattice with the same global ids, then keeps the particles of its cells.
+  std::vector<std::int64_t> gid;
+  std::vector<double> x, y, rho;
+  std::int64_t next = 0;
+  const double g = params_.gravity, rho0 = params_.density;
+  for (const auto& b : params_.water) {
+    const int nx = static_cast<int>(std::lround((b.x1 - b.x0) / dx_));
+    const int ny = static_cast<int>(std::lround((b.y1 + std::abs(b.surface_amplitude) - b.y0) / dx_));
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        const double px = b.x0 + (i + 0.5) * dx_, py = b.y0 + (j + 0.5) * dx_;
+        const double surface = b.y1 + b.surface_amplitude * std::cos(M_PI * px / params_.tank_length);
+        if (py >= surface) continue;
+        gid.push_back(next++);
+        x.push_back(px);
+        y.push_back(py);
+        // Hydrostatic initial state: p = rho0 g (surface - y), density from eq. 9.
+        rho.push_back(density_from_pressure(rho0 * g * (surface - py), rho0, c0_));
+      }
+  }
+  n_global_ = next;
+  std::vector<long> counts(grid_.cell_count(), 0);
+  for (std::size_t k = 0; k < x.size(); ++k) ++counts[grid_.cell_of(x[k], y[k])];
+  owner_ = parallel::partition_cells_collective(comm_.get(), grid_, counts);
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    if (owner_[grid_.cell_of(x[k], y[k])] != rank_) continue;
+    gid_.push_back(gid[k]);
+    x_.push_back(x[k]);
+    y_.push_back(y[k]);
+    vx_.push_back(0.0);
+    vy_.push_back(0.0);
+    rho_.push_back(rho[k]);
+    mass_.push_back(rho[k] * dx_ * dx_);  // each particle stands for a dx^2 cell of water at its density
+  }
+  n_owned_ = n_local_ = static_cast<int>(gid_.size());
+  sort_owned_by_cell();
+}
+
+void Fluid::sort_owned_by_cell() {
+  cell_.resize(n_owned_);
+  for (int i = 0; i < n_owned_; ++i) cell_[i] = grid_.cell_of(x_[i], y_[i]);
+  std::vector<int> perm(n_owned_);
+  std::iota(perm.begin(), perm.end(), 0);
+  std::sort(perm.begin(), perm.end(), [&](int a, int b) {
+    return cell_[a] != cell_[b] ? cell_[a] < cell_[b] : gid_[a] < gid_[b];
+  });
+  permute(gid_, perm);
+  permute(x_, perm);
+  permute(y_, perm);
+  permute(vx_, perm);
+  permute(vy_, perm);
+  permute(rho_, perm);
+  permute(mass_, perm);
+  permute(cell_, perm);
+}
+
+void Fluid::exchange_halo() {
+  // The plan is rebuilt every step (particles move every step; building it costs less than one field update).
+  const parallel::HaloPlan plan(comm_.get(), grid_, owner_, cell_);
+  constexpr int kFields = 6;
+  std::vector<double> state(static_cast<std::size_t>(n_owned_) * kFields);
+  for (int i = 0; i < n_owned_; ++i) {
+    double* s = &state[static_cast<std::size_t>(i) * kFields];
+    s[0] = x_[i]; s[1] = y_[i]; s[2] = vx_[i]; s[3] = vy_[i]; s[4] = rho_[i]; s[5] = mass_[i];
+  }
+  plan.update(state, n_owned_, kFields);
+  plan.update(gid_, n_owned_);
+  n_local_ = n_owned_ + static_cast<int>(plan.ghost_count());
+  for (auto* v : {&x_, &y_, &vx_, &vy_, &rho_, &mass_}) v->resize(n_local_);
+  for (int i = n_owned_; i < n_local_; ++i) {
+    const double* s = &state[static_cast<std::size_t>(i) * kFields];
+    x_[i] = s[0]; y_[i] = s[1]; vx_[i] = s[2]; vy_[i] = s[3]; rho_[i] = s[4]; mass_[i] = s[5];
+  }
+  halo_plan_ = plan;
+}
+
+void Fluid::compute_forces() {
+  {
+    ScopedTimer t(timers_, "halo");
+    exchange_halo();
+    p_.resize(n_local_);
+    for (int i = 0; i < n_local_; ++i) p_[i] = pressure_from_density(rho_[i], params_.density, c0_);  // eq. 9
+  }
+  {
+    ScopedTimer t(timers_, "neighbours");
+    search_.fluid_pairs(x_.data(), y_.data(), gid_.data(), n_owned_, n_local_, pairs_);
+    search_.fixed_pairs(0, x_.data(), y_.data(), n_owned_, wall_pairs_);
+    search_.fixed_pairs(1, x_.data(), y_.data(), n_owned_, ghost_pairs_);
+  }
+  const ParticleView pv{x_.data(), y_.data(), vx_.data(), vy_.data(), rho_.data(), mass_.data(), p_.data(),
+                        n_owned_};
+  const bool use_delta = params_.scheme == Scheme::kDeltaSph && params_.delta > 0.0;
+  {
+    ScopedTimer t(timers_, "density_gradient");
+    if (use_delta) {
+      density_gradient(pv, pairs_, grad_rho_);
+      halo_plan_.update(grad_rho_, n_owned_, 2);
+    } else {
+      grad_rho_.clear();
+    }
+  }
+  {
+    ScopedTimer t(timers_, "forces");
+    const double ag = motion_ ? motion_->acceleration(time_) : 0.0;
+    RateConstants& k = constants_;
+    k.rho0 = params_.density;
+    k.c0 = c0_;
+    k.h = kernel_.h;
+    k.dx = dx_;
+    k.delta = use_delta ? params_.delta : 0.0;
+    k.alpha = params_.alpha;
+    k.xsph = params_.xsph;
+    k.tensile = params_.tensile_correction;
+    k.eps_neg = params_.tensile_epsilon_negative;
+    k.eps_pos = params_.tensile_epsilon_positive;
+    k.w_dx = kernel_.value(dx_);
+    k.wall_amplitude = params_.wall_repulsion * c0_ * c0_ / kernel_.h;
+    k.wall_range = 0.5 * dx_;
+    k.wall_pressure = params_.wall_pressure;
+    k.body_x = -ag;  // the tank frame: every mass feels -a_g(t)
+    k.body_y = -params_.gravity;
+    momentum_rates(pv, pairs_, wall_pairs_, walls_, ghost_pairs_, ghosts_, k, rates_);
+    // Time step: CFL on sound and viscous signal speed and the force limit (Monaghan 1989 style); max is exact.
+    double m[2] = {rates_.max_mu, rates_.max_accel};
+    MPI_Allreduce(MPI_IN_PLACE, m, 2, MPI_DOUBLE, MPI_MAX, comm_.get());
+    double dt = params_.cfl * kernel_.h / (c0_ + m[0]);
+    if (m[1] > 0.0) dt = std::min(dt, params_.cfl * std::sqrt(kernel_.h / m[1]));
+    dt_ = std::min(dt, params_.max_dt);
+  }
+  extra_ax_.assign(n_owned_, 0.0);
+  extra_ay_.assign(n_owned_, 0.0);
+  forces_ready_ = true;
+}
+
+void Fluid::advance() {
+  HALFETI_CHECK(forces_ready_, "Fluid::advance() needs compute_forces() first");
+  forces_ready_ = false;
+  {
+    ScopedTimer t(timers_, "integrate");
+    // Leap-frog in symplectic-Euler form (velocities staggered half a step): kick v += dt (a + Delta C) ...
+    for (int i = 0; i < n_owned_; ++i) {
+      vx_[i] += dt_ * (rates_.ax[i] + extra_ax_[i]);  // eq. 4 with Delta C
+      vy_[i] += dt_ * (rates_.ay[i] + extra_ay_[i]);
+    }
+  }
+  {
+    // ... then the density rate and XSPH with the kicked velocities (the same halo plan carries them) ...
+    ScopedTimer t(timers_, "halo");
+    std::vector<double> v(2 * static_cast<std::size_t>(n_owned_));
+    for (int i = 0; i < n_owned_; ++i) {
+      v[2 * i] = vx_[i];
+      v[2 * i + 1] = vy_[i];
+    }
+    halo_plan_.update(v, n_owned_, 2);
+    for (int i = n_owned_; i < n_local_; ++i) {
+      vx_[i] = v[2 * i];
+      vy_[i] = v[2 * i + 1];
+    }
+  }
+  {
+    ScopedTimer t(timers_, "forces");
+    const ParticleView pv{x_.data(), y_.data(), vx_.data(), vy_.data(), rho_.data(), mass_.data(), p_.data(),
+                          n_owned_};
+    continuity_rates(pv, pairs_, ghost_pairs_, ghosts_, grad_rho_, constants_, rates_);
+  }
+  {
+    // ... and drift r += dt (v + XSPH), rho += dt Drho.
+    ScopedTimer t(timers_, "integrate");
+    for (int i = 0; i < n_owned_; ++i) {
+      x_[i] += dt_ * (vx_[i] + rates_.xsph_x[i]);  // eq. 11
+      y_[i] += dt_ * (vy_[i] + rates_.xsph_y[i]);
+      rho_[i] += dt_ * rates_.drho[i];  // eq. 3
+    }
+    for (auto* v : {&x_, &y_, &vx_, &vy_, &rho_, &mass_}) v->resize(n_owned_);
+    gid_.resize(n_owned_);
+    n_local_ = n_owned_;
+    time_ += dt_;
+    ++step_;
+  }
+  {
+    ScopedTimer t(timers_, "health");
+    check_health();
+  }
+  {
+    ScopedTimer t(timers_, "rebalance");
+    maybe_rebalance();
+  }
+  {
+    ScopedTimer t(timers_, "migrate");
+    migrate();
+  }
+}
+
+void Fluid::step() {
+  compute_forces();
+  advance();
+}
+
+std::vector<long> Fluid::global_cell_counts() const {
+  std::vector<long> counts(grid_.cell_count(), 0);
+  for (int i = 0; i < n_owned_; ++i) ++counts[grid_.cell_of(x_[i], y_[i])];
+  MPI_Allreduce(MPI_IN_PLACE, counts.data(), grid_.cell_count(), MPI_LONG, MPI_SUM, comm_.get());
+  return counts;
+}
+
+void Fluid::maybe_rebalance() {
+  if (size_ == 1 || params_.rebalance_interval <= 0 || step_ % params_.rebalance_interval != 0) return;
+  const auto counts = global_cell_counts();
+  if (parallel::imbalance(owner_, counts, size_) <= params_.rebalance_threshold) return;
+  owner_ = parallel::partition_cells_collective(comm_.get(), grid_, counts);
+}
+
+void Fluid::migrate() {
+  for (int i = 0; i < n_owned_; ++i) cell_[i] = grid_.cell_of(x_[i], y_[i]);
+  if (size_ > 1) {
+    const parallel::ParticleMigration move(comm_.get(), parallel::destinations(cell_, owner_));
+    if (move.anything_moves()) {
+      for (auto* v : {&x_, &y_, &vx_, &vy_, &rho_, &mass_}) move.apply(*v);
+      move.apply(gid_);
+      n_owned_ = n_local_ = static_cast<int>(move.new_count());
+    }
+  }
+  sort_owned_by_cell();
+}
+
+std::vector<double> Fluid::pressure() const {
+  std::vector<double> p(n_owned_);
+  for (int i = 0; i < n_owned_; ++i) p[i] = pressure_from_density(rho_[i], params_.density, c0_);
+  return p;
+}
+
+}  // namespace halfeti::sph

@@ -1,0 +1,133 @@
+// Right-hand sides of the delta-SPH equations for the owned particles.
+#include <algorithm>
+#include <cmath>
+
+#include "halfeti/sph/delta_sph.hpp"
+
+namespace halfeti::sph {
+
+namespace {
+// Monaghan (2000) tensile-instability coefficient R_i: eps |p| / rho^2, larger for tension.
+inline double tensile_coefficient(double p, double rho, double eps_neg, double eps_pos) {
+  return (p < 0.0 ? eps_neg * -p : eps_pos * p) / (rho * rho);
+}
+}  // namespace
+
+void momentum_rates(const ParticleView& pv, const PairList& pairs, const PairList& wall_pairs,
+                    const WallParticles& walls, const PairList& ghost_pairs, const WallGhosts& ghosts,
+                    const RateConstants& k, Rates& out) {
+  const int n = pv.n_owned;
+  out.ax.assign(n, 0.0);
+  out.ay.assign(n, 0.0);
+  double max_mu = 0.0, max_a2 = 0.0;
+  const double eta2 = 0.01 * k.h * k.h;
+  const double viscosity = k.alpha * k.h * k.c0 * k.rho0;     // eq. 4
+
+  for (int i = 0; i < n; ++i) {
+    const double rhoi = pv.rho[i], pi = pv.p[i], ui = pv.vx[i], vi = pv.vy[i];
+    const double ri_t = k.tensile ? tensile_coefficient(pi, rhoi, k.eps_neg, k.eps_pos) : 0.0;
+    double ax = 0, ay = 0;
+    for_each_neighbour(pairs, i, [&](int j, int q) {
+      const double ex = pairs.ex[q], ey = pairs.ey[q], r = pairs.r[q];
+      const double gx = -pairs.f[q] * ex, gy = -pairs.f[q] * ey;  // grad_i W_ij
+      const double vj = pv.mass[j] / pv.rho[j];
+      const double du = pv.vx[j] - ui, dv = pv.vy[j] - vi;
+      // eq. 4 pressure term in the symmetric volume form -(1/rho_i) sum (p_i + p_j) V_j grad_i W_ij
+      double scalar = -(pi + pv.p[j]) * vj / rhoi;
+      // eq. 8: pi_ij = (u_j - u_i).(r_j - r_i) / (|r_ji|^2 + eta^2); eq. 4: + alpha h c0 rho0 / rho_i sum pi_ij V_j grad W
+      const double u_dot_r = du * ex + dv * ey;
+      scalar += viscosity * (u_dot_r / (r * r + eta2)) * vj / rhoi;
+      if (k.tensile) {  // Monaghan (2000): - m_j (R_i + R_j) (W_ij / W(dx))^4 grad_i W_ij
+        const double fij = pairs.w[q] / k.w_dx, f2 = fij * fij;
+        scalar -= pv.mass[j] * (ri_t + tensile_coefficient(pv.p[j], pv.rho[j], k.eps_neg, k.eps_pos)) * f2 * f2;
+      }
+      ax += scalar * gx;
+      ay += scalar * gy;
+      max_mu = std::max(max_mu, std::abs(k.h * u_dot_r / (r * r + eta2)));
+    });
+
+    // Wall pressure: the eq. 4 pressure term over the ghost points behind the tank walls, their pressure continued
+    // hydrostatically from particle i (Adami et al. 2012); a wall pushes, it never pulls (sum clamped at 0).
+    if (k.wall_pressure)
+      for_each_neighbour(ghost_pairs, i, [&](int g, int q) {
+        const double p_ghost = pi + rhoi * (k.body_x * ghost_pairs.ex[q] + k.body_y * ghost_pairs.ey[q]);
+        double s = -std::max(pi + p_ghost, 0.0) * ghosts.volume[g] / rhoi * -ghost_pairs.f[q];
+        // eq. 8 with the mirrored velocity: only the wall-normal motion is damped (free slip)
+        const double un = ui * ghosts.nx[g] + vi * ghosts.ny[g];
+        const double e_n = ghosts.nx[g] * ghost_pairs.ex[q] + ghosts.ny[g] * ghost_pairs.ey[q];
+        const double r = ghost_pairs.r[q];
+        s += viscosity * (-2.0 * un * e_n / (r * r + eta2)) * ghosts.volume[g] / rhoi * -ghost_pairs.f[q];
+        ax += s * ghost_pairs.ex[q];
+        ay += s * ghost_pairs.ey[q];
+      });
+    // Walls: Monaghan & Kos (1999) repulsion, kept as a short-range barrier against penetration.
+    for_each_neighbour(wall_pairs, i, [&](int w, int q) {
+      const double rx = -wall_pairs.ex[q], ry = -wall_pairs.ey[q];  // r_i - r_w
+      double nx = walls.nx[w], ny = walls.ny[w];
+      double psi = rx * nx + ry * ny;
+      if (walls.two_sided[w] && psi < 0.0) {
+        psi = -psi;
+        nx = -nx;
+        ny = -ny;
+      }
+      if (psi <= 0.0) return;
+      const double xi = -rx * ny + ry * nx;
+      const double push = monaghan_kos_repulsion(psi, xi, walls.spacing[w], k.wall_range, k.wall_amplitude);
+      ax += push * nx;
+      ay += push * ny;
+    });
+    ax += k.body_x;
+    ay += k.body_y;
+    out.ax[i] = ax;
+    out.ay[i] = ay;
+    max_a2 = std::max(max_a2, ax * ax + ay * ay);
+  }
+  out.max_mu = max_mu;
+  out.max_accel = std::sqrt(max_a2);
+}
+
+void continuity_rates(const ParticleView& pv, const PairList& pairs, const PairList& ghost_pairs,
+                      const WallGhosts& ghosts, const std::vector<double>& grad_rho, const RateConstants& k,
+                      Rates& out) {
+  const int n = pv.n_owned;
+  out.drho.assign(n, 0.0);
+  out.xsph_x.assign(n, 0.0);
+  out.xsph_y.assign(n, 0.0);
+  const double diffusion = k.delta * k.h * k.c0;  // eq. 3
+  const bool use_delta = k.delta > 0.0 && !grad_rho.empty();
+  for (int i = 0; i < n; ++i) {
+    const double rhoi = pv.rho[i], ui = pv.vx[i], vi = pv.vy[i];
+    const double gri_x = use_delta ? grad_rho[2 * i] : 0.0, gri_y = use_delta ? grad_rho[2 * i + 1] : 0.0;
+    double drho = 0, xs = 0, ys = 0;
+    for_each_neighbour(pairs, i, [&](int j, int q) {
+      const double ex = pairs.ex[q], ey = pairs.ey[q], r = pairs.r[q];
+      const double gx = -pairs.f[q] * ex, gy = -pairs.f[q] * ey;  // grad_i W_ij
+      const double vj = pv.mass[j] / pv.rho[j];
+      const double du = pv.vx[j] - ui, dv = pv.vy[j] - vi;
+      // eq. 3, first term, in Marrone et al.'s (2011) form -rho_i sum V_j (u_j - u_i).grad_i W_ij
+      drho -= rhoi * vj * (du * gx + dv * gy);
+      if (use_delta) {
+        // eqs. 3, 5: delta h c0 sum V_j psi_ij.grad_i W_ij, psi_ij = 2 (rho_j - rho_i) r_ji / r^2 - (grad^L_i + grad^L_j)
+        const double s = 2.0 * (pv.rho[j] - rhoi) / (r * r);
+        const double psx = s * ex - (gri_x + grad_rho[2 * j]), psy = s * ey - (gri_y + grad_rho[2 * j + 1]);
+        drho += diffusion * vj * (psx * gx + psy * gy);
+      }
+      // eq. 11 (XSPH), written towards the neighbours' mean velocity: eps sum m_j (u_j - u_i) / rho_bar_ij W_ij
+      const double wm = pv.mass[j] * pairs.w[q] / (0.5 * (rhoi + pv.rho[j]));
+      xs += wm * du;
+      ys += wm * dv;
+    });
+    // Wall ghosts move as the mirror image of particle i (free slip): u_g - u_i = -2 (u_i . n) n.
+    if (k.wall_pressure)
+      for_each_neighbour(ghost_pairs, i, [&](int g, int q) {
+        const double un = ui * ghosts.nx[g] + vi * ghosts.ny[g];
+        const double n_dot_grad = -ghost_pairs.f[q] * (ghosts.nx[g] * ghost_pairs.ex[q] + ghosts.ny[g] * ghost_pairs.ey[q]);
+        drho += 2.0 * rhoi * ghosts.volume[g] * un * n_dot_grad;  // eq. 3 first term over the ghosts
+      });
+    out.drho[i] = drho;
+    out.xsph_x[i] = k.xsph * xs;
+    out.xsph_y[i] = k.xsph * ys;
+  }
+}
+
+}  // namespace halfeti::sph

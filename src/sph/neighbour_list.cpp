@@ -1,0 +1,109 @@
+#include "halfeti/sph/neighbour_list.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace halfeti::sph {
+
+namespace {
+// Counting sort of items by cell; inside a cell, by key (global id / wall index).
+template <class Key>
+void bin(const parallel::CellGrid& g, const double* x, const double* y, int n, Key key, std::vector<int>& start,
+         std::vector<int>& items, std::vector<int>& cell_of) {
+  const int nc = g.cell_count();
+  start.assign(nc + 1, 0);
+  cell_of.resize(n);
+  for (int i = 0; i < n; ++i) {
+    cell_of[i] = g.cell_of(x[i], y[i]);
+    ++start[cell_of[i] + 1];
+  }
+  for (int c = 0; c < nc; ++c) start[c + 1] += start[c];
+  items.resize(n);
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (int i = 0; i < n; ++i) items[fill[cell_of[i]]++] = i;
+  for (int c = 0; c < nc; ++c) {
+    auto b = items.begin() + start[c], e = items.begin() + start[c + 1];
+    if (e - b > 1) std::sort(b, e, [&](int a, int bb) { return key(a) < key(bb); });
+  }
+}
+
+// Proper crossing of segments p1p2 and q1q2 (orientation test).
+bool segments_cross(double p1x, double p1y, double p2x, double p2y, double q1x, double q1y, double q2x,
+                    double q2y) {
+  auto orient = [](double ax, double ay, double bx, double by, double cx, double cy) {
+    return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+  };
+  const double d1 = orient(q1x, q1y, q2x, q2y, p1x, p1y), d2 = orient(q1x, q1y, q2x, q2y, p2x, p2y);
+  const double d3 = orient(p1x, p1y, p2x, p2y, q1x, q1y), d4 = orient(p1x, p1y, p2x, p2y, q2x, q2y);
+  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0));
+}
+}  // namespace
+
+void NeighbourSearch::set_fixed_points(int set, const std::vector<double>& px, const std::vector<double>& py) {
+  FixedBins& b = fixed_[set];
+  b.x = px;
+  b.y = py;
+  std::vector<int> cells;
+  bin(grid_, b.x.data(), b.y.data(), static_cast<int>(b.x.size()), [](int i) { return i; }, b.start, b.items,
+      cells);
+}
+
+bool NeighbourSearch::crosses_barrier(double xi, double yi, double xj, double yj) const {
+  for (const auto& b : barriers_)
+    if (segments_cross(xi, yi, xj, yj, b.xa, b.ya, b.xb, b.yb)) return true;
+  return false;
+}
+
+void NeighbourSearch::fluid_pairs(const double* x, const double* y, const std::int64_t* gid, int n_owned,
+                                  int n_local, PairList& out) {
+  bin(grid_, x, y, n_local, [gid](int i) { return gid[i]; }, cell_start_, cell_items_, cell_of_);
+  out.clear();
+  out.start.assign(n_owned + 1, 0);
+  const double rc2 = kernel_.support() * kernel_.support();
+  const bool barriers = !barriers_.empty();
+  double min_r2 = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < n_owned; ++i) {
+    const int c = cell_of_[i], cx = c % grid_.nx, cy = c / grid_.nx;
+    const double xi = x[i], yi = y[i];
+    // Global cell order (dy outer, dx inner gives ascending cell index), then global id inside the cell.
+    for (int jy = std::max(cy - 1, 0); jy <= std::min(cy + 1, grid_.ny - 1); ++jy)
+      for (int jx = std::max(cx - 1, 0); jx <= std::min(cx + 1, grid_.nx - 1); ++jx) {
+        const int cc = jy * grid_.nx + jx;
+        for (int k = cell_start_[cc]; k < cell_start_[cc + 1]; ++k) {
+          const int j = cell_items_[k];
+          if (j == i) continue;
+          const double dx = x[j] - xi, dy = y[j] - yi, r2 = dx * dx + dy * dy;
+          if (r2 >= rc2) continue;
+          if (barriers && crosses_barrier(xi, yi, x[j], y[j])) continue;
+          min_r2 = std::min(min_r2, r2);
+          out.push(j, dx, dy, std::sqrt(r2), kernel_);
+        }
+      }
+    out.start[i + 1] = static_cast<int>(out.size());
+  }
+  min_distance_ = std::sqrt(min_r2);
+}
+
+void NeighbourSearch::fixed_pairs(int set, const double* x, const double* y, int n_owned, PairList& out) const {
+  const FixedBins& b = fixed_[set];
+  out.clear();
+  out.start.assign(n_owned + 1, 0);
+  const double rc2 = kernel_.support() * kernel_.support();
+  for (int i = 0; i < n_owned; ++i) {
+    const int cx = grid_.ix(x[i]), cy = grid_.iy(y[i]);
+    for (int jy = std::max(cy - 1, 0); jy <= std::min(cy + 1, grid_.ny - 1); ++jy)
+      for (int jx = std::max(cx - 1, 0); jx <= std::min(cx + 1, grid_.nx - 1); ++jx) {
+        const int cc = jy * grid_.nx + jx;
+        for (int k = b.start[cc]; k < b.start[cc + 1]; ++k) {
+          const int j = b.items[k];
+          const double dx = b.x[j] - x[i], dy = b.y[j] - y[i], r2 = dx * dx + dy * dy;
+          if (r2 >= rc2 || r2 == 0.0) continue;
+          if (!barriers_.empty() && set == 1 && crosses_barrier(x[i], y[i], b.x[j], b.y[j])) continue;
+          out.push(j, dx, dy, std::sqrt(r2), kernel_);
+        }
+      }
+    out.start[i + 1] = static_cast<int>(out.size());
+  }
+}
+
+}  // namespace halfeti::sph

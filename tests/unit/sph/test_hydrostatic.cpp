@@ -1,0 +1,36 @@
+// Hydrostatic tank (validation ladder step 1) at a coarse spacing: still water must stay still.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "halfeti/sph/fluid.hpp"
+
+using namespace halfeti::sph;
+
+TEST(Hydrostatic, PressureFollowsRhoGDepthAfterOneSecond) {
+  FluidParams p;
+  p.tank_length = 0.30;
+  p.tank_height = 0.40;
+  p.spacing = 0.005;
+  p.water = {{0.0, 0.0, 0.30, 0.10, 0.0}};
+  Fluid fluid(MPI_COMM_WORLD, p, nullptr);
+  const double m0 = fluid.total_mass();
+  const long n0 = fluid.global_count();
+  while (fluid.time() < 1.0) fluid.step();
+  const double g = p.gravity, rho0 = p.density, d = 0.10;
+  for (double y : {0.005, 0.025, 0.05}) {
+    const double expected = rho0 * g * (d - y);
+    const double got = fluid.pressure_at(0.15, y);
+    std::printf("y = %.3f m: p = %.2f Pa, rho g (d - y) = %.2f Pa, error %.3f%%\n", y, got, expected,
+                100.0 * (got - expected) / expected);
+    EXPECT_NEAR(got, expected, 0.01 * expected) << "at y = " << y;
+  }
+  std::printf("steps %ld, max density variation %.4f%%, kinetic energy %.3e J/m\n", fluid.step_count(),
+              100.0 * fluid.max_density_variation(), fluid.kinetic_energy());
+  EXPECT_LT(fluid.max_density_variation(), 0.01);
+  EXPECT_DOUBLE_EQ(fluid.total_mass(), m0);
+  long n = static_cast<long>(fluid.owned_count());
+  MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_EQ(n, n0);
+}
