@@ -231,9 +231,17 @@ CatenarySolution solve_catenary(const Eigen::Vector2d& end1, const Eigen::Vector
       k(0, 1) = k(1, 0) = 0.5 * (k(0, 1) + k(1, 0));
     }
     const Eigen::Matrix2d& a = frame.axes;
-    sol.flexibility =
-        a * (std::isinf(f(0, 0)) ? Eigen::Matrix2d(Eigen::Vector2d(0.0, f(1, 1)).asDiagonal()) : f) *
-        a.transpose();
+    if (std::isinf(f(0, 0))) {
+      // Unbounded along the frame's x; written entry by entry so that a zero direction cosine gives 0, not
+      // NaN.
+      const Eigen::Matrix2d along_x = a.col(0) * a.col(0).transpose();
+      sol.flexibility = f(1, 1) * a.col(1) * a.col(1).transpose();
+      for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j)
+          if (along_x(i, j) != 0.0) sol.flexibility(i, j) = std::copysign(f(0, 0), along_x(i, j));
+    } else {
+      sol.flexibility = a * f * a.transpose();
+    }
     sol.stiffness = a * k * a.transpose();
   }
   // Forces on the ends: +T(0) on end 1, -T(L0) on end 2; they sum to the cable's load.

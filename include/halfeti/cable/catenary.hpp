@@ -52,7 +52,7 @@ struct CatenarySolution {
   double chord = 0.0;
   CableState state = CableState::kSlack;  // slack: chord shorter than L0
   bool carries_load = false;  // false only for a weightless slack cable (zero force and stiffness)
-  Eigen::Matrix2d flexibility = Eigen::Matrix2d::Zero();  // d(d)/d(Tx, Ty), d = end2 - end1 (global)
+  Eigen::Matrix2d flexibility = Eigen::Matrix2d::Zero();  // d(end2 - end1)/d(Tx, Ty); inf laterally if folded
   Eigen::Matrix2d stiffness = Eigen::Matrix2d::Zero();    // d(Tx, Ty)/d(d)
   Eigen::Vector4d nodal_force = Eigen::Vector4d::Zero();  // force the cable exerts on (x1, y1, x2, y2)
   Eigen::Matrix4d tangent = Eigen::Matrix4d::Zero();      // -d(nodal_force)/d(x1, y1, x2, y2) = [K -K; -K K]

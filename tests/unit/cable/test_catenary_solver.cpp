@@ -143,6 +143,8 @@ TEST(CatenarySolver, VerticalCable) {
   const CatenarySolution folded = solve_catenary({0.0, 0.0}, {0.0, 0.5}, make_cable(l0, ea, w));
   EXPECT_EQ(folded.state, CableState::kSlack);
   EXPECT_EQ(folded.stiffness(0, 0), 0.0);
+  EXPECT_TRUE(std::isinf(folded.flexibility(0, 0)));
+  EXPECT_EQ(folded.flexibility(0, 1), 0.0);
   EXPECT_GT(folded.stiffness(1, 1), 0.0);
   EXPECT_NEAR(folded.nodal_force(1) + folded.nodal_force(3), -w * l0, 1e-12);
   EXPECT_GT(folded.sag, 0.0);
