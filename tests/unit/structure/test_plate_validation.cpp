@@ -56,15 +56,29 @@ Eigen::Vector2d elastica_tip(double alpha) {
   return tip;
 }
 
+// Cost of a time step at the paper's maximum dt (1.6e-5 s) during free vibration: microseconds per step and mean
+// Newton iterations per step.
+Eigen::Vector2d step_cost(hs::PlateSolver& s, int steps) {
+  s.clear_loads();
+  s.initialise_acceleration(0.0);
+  const double dt = 1.6e-5;
+  int iterations = 0;
+  const double t0 = now();
+  for (int n = 0; n < steps; ++n) iterations += s.step(n * dt, dt).newton_iterations;
+  return {1e6 * (now() - t0) / steps, double(iterations) / steps};
+}
+
 TEST(PlateValidation, SmallLoadCantileverConvergence) {
   const double load = 1e-3;  // N/m, tip deflection ~1e-4 L (linear regime)
-  std::printf("\nmesh (across x along)  elements  dofs  tip/EB - 1   tip/Timoshenko - 1   static solve [ms]\n");
+  std::printf("\nmesh      elements  dofs   tip/EB - 1  tip/Timoshenko - 1  static [ms]  step [us]  Newton/step\n");
   struct Row {
     int across, along;
+    double nu;
   };
   double error_paper = 0.0, error_fine = 0.0;
-  for (Row r : {Row{1, 20}, Row{1, 40}, Row{2, 40}, Row{2, 60}, Row{4, 30}, Row{4, 60}, Row{8, 120}}) {
-    const auto p = paper_plate(r.across, r.along);
+  for (Row r : {Row{1, 20, 0.45}, Row{1, 40, 0.45}, Row{2, 40, 0.45}, Row{2, 60, 0.45}, Row{4, 30, 0.45},
+                Row{4, 60, 0.45}, Row{8, 120, 0.45}, Row{8, 120, 0.0}}) {
+    const auto p = paper_plate(r.across, r.along, r.nu);
     hs::PlateSolver s(PETSC_COMM_WORLD, p);
     const double t0 = now();
     const double tip = static_tip(s, load).x();
@@ -72,10 +86,12 @@ TEST(PlateValidation, SmallLoadCantileverConvergence) {
     const double eb = hs::testing::euler_bernoulli_tip(p, load);
     const double shear = load * p.geometry.height / (5.0 / 6.0 * p.material.youngs_modulus /
                                                      (2 * (1 + p.material.poisson_ratio)) * p.geometry.thickness);
-    std::printf("%2d x %-3d               %5d  %5d  %+.5f     %+.5f             %.2f\n", r.across, r.along,
-                r.across * r.along, s.dof_count(), tip / eb - 1, tip / (eb + shear) - 1, 1e3 * cost);
+    const Eigen::Vector2d step = step_cost(s, r.across * r.along > 200 ? 10 : 50);
+    std::printf("%d x %-3d%s  %5d  %5d   %+.5f     %+.5f          %7.2f    %7.0f    %.1f\n", r.across, r.along,
+                r.nu == 0.0 ? " nu=0" : "     ", r.across * r.along, s.dof_count(), tip / eb - 1,
+                tip / (eb + shear) - 1, 1e3 * cost, step(0), step(1));
     if (r.across == 2 && r.along == 60) error_paper = tip / eb - 1;
-    if (r.across == 8) error_fine = tip / eb - 1;
+    if (r.across == 8 && r.nu > 0.0) error_fine = tip / eb - 1;
   }
   EXPECT_LT(std::abs(error_paper), 0.01);
   EXPECT_LT(std::abs(error_fine), 0.01);
@@ -169,22 +185,35 @@ TEST(PlateValidation, TrapezoidalRuleConservesEnergy) {
 }
 
 TEST(PlateValidation, NewtonIterationCost) {
-  const auto p = paper_plate(2, 60);
-  hs::PlateSolver s(PETSC_COMM_WORLD, p);
-  s.add_edge_load("top", Eigen::Vector2d(1.0, 0.0));
-  s.begin_step(0.0, 1.6e-5);  // the paper's maximum time step
-  const int n = 2000;
-  double assembly = 0.0, solve = 0.0;
-  for (int i = 0; i < n; ++i) {
-    const double t0 = now();
-    s.assemble_newton_system();
-    const double t1 = now();
-    s.solve_newton_increment();
-    assembly += t1 - t0;
-    solve += now() - t1;
+  for (auto mesh : {std::pair{2, 60}, std::pair{1, 40}, std::pair{1, 30}}) {
+    const auto p = paper_plate(mesh.first, mesh.second);
+    hs::PlateSolver s(PETSC_COMM_WORLD, p);
+    s.add_edge_load("top", Eigen::Vector2d(1.0, 0.0));
+    s.begin_step(0.0, 1.6e-5);  // the paper's maximum time step
+    // The machine is shared: report the mean over all iterations and the best of 20 batches of 50 (closest to an
+    // unloaded core).
+    double assembly = 0.0, solve = 0.0, best = 1e9;
+    const int batches = 20, per_batch = 50;
+    for (int b = 0; b < batches; ++b) {
+      double batch = 0.0;
+      for (int i = 0; i < per_batch; ++i) {
+        const double t0 = now();
+        s.assemble_newton_system();
+        const double t1 = now();
+        s.solve_newton_increment();
+        const double t2 = now();
+        assembly += t1 - t0;
+        solve += t2 - t1;
+        batch += t2 - t0;
+      }
+      best = std::min(best, batch / per_batch);
+    }
+    const int n = batches * per_batch;
+    std::printf("one Newton iteration, %d x %d Q9 (%d dofs): assembly %.1f us + KSP (LU) %.1f us = %.1f us mean, "
+                "%.1f us best batch\n",
+                mesh.first, mesh.second, s.dof_count(), 1e6 * assembly / n, 1e6 * solve / n,
+                1e6 * (assembly + solve) / n, 1e6 * best);
   }
-  std::printf("one Newton iteration, 2 x 60 Q9 (%d dofs): assembly %.1f us + KSP (LU) %.1f us = %.1f us\n",
-              s.dof_count(), 1e6 * assembly / n, 1e6 * solve / n, 1e6 * (assembly + solve) / n);
   SUCCEED();
 }
 
