@@ -29,6 +29,12 @@ struct PairList {
     w.push_back(k.value(rr)); f.push_back(k.derivative(rr) / rr);
   }
   std::size_t size() const { return j.size(); }
+  // No pairs for n particles (e.g. a scene without walls).
+  static PairList none(int n) {
+    PairList p;
+    p.start.assign(n + 1, 0);
+    return p;
+  }
 };
 
 // Drives a per-pair functor over the neighbours of particle i: fn(j, pair index). Physics never walks cells.
