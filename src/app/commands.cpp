@@ -1,10 +1,12 @@
 #include "halfeti/app/commands.hpp"
 
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 #include "halfeti/app/cli.hpp"
 #include "halfeti/app/scene_schema.hpp"
+#include "halfeti/app/petsc_session.hpp"
 #include "halfeti/app/simulation.hpp"
 #include "halfeti/cable/cable_tool.hpp"
 #include "halfeti/core/error.hpp"
@@ -44,6 +46,10 @@ int execute(const std::vector<std::string>& args, MPI_Comm comm) {
     }
     case Command::Kind::kRun: {
       scene::Scene s = scene::load_scene(cmd.scene, cmd.overrides, *scene_schema(), comm);
+      if (!cmd.petsc_args.empty() && !s.root().has("structure"))
+        HALFETI_USER_ERROR("PETSc options were given after '--', but the scene has no structure to use them");
+      std::unique_ptr<PetscSession> petsc;
+      if (s.root().has("structure")) petsc = std::make_unique<PetscSession>(cmd.petsc_args);
       RunOptions opts{cmd.out_dir, cmd.petsc_args, true};
       Simulation sim(comm, std::move(s), opts);
       sim.run();

@@ -3,6 +3,8 @@
 #include <cctype>
 #include <set>
 
+#include "halfeti/structure/plate_mesh.hpp"
+
 namespace halfeti::app {
 
 using scene::Key;
@@ -13,7 +15,40 @@ const sph::FluidParams& Parts::require_fluid(const std::string& who) const {
   return *fluid_params;
 }
 
+const StructureSetup& Parts::require_structure(const std::string& who) const {
+  if (!structure_setup)
+    HALFETI_USER_ERROR(who << ": this probe reads the plate, but the scene has no `structure:` section");
+  return *structure_setup;
+}
+
+int Parts::cable_index(const std::string& who, const std::string& name) const {
+  for (size_t i = 0; i < cable_setups.size(); ++i)
+    if (cable_setups[i].name == name) return static_cast<int>(i);
+  std::string known;
+  for (const auto& c : cable_setups) known += (known.empty() ? "" : ", ") + c.name;
+  HALFETI_USER_ERROR(who << ": no cable named '" << name << "'"
+                         << (known.empty() ? " (the scene has no cables)" : " (cables: " + known + ")"));
+}
+
 namespace {
+
+// Structure and cable values live on the structure's rank; every rank returns the same number.
+double from_structure_rank(const Parts& parts, double value_on_structure_rank) {
+  double v = parts.structure_rank ? value_on_structure_rank : 0.0;
+  MPI_Bcast(&v, 1, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  return v;
+}
+
+template <class Read>
+ProbeFactory structure_probe(Read read) {
+  return [read](const scene::Node& p, Parts& parts) {
+    parts.require_structure(p.path());
+    const Parts* owner = &parts;
+    return ProbeColumn{p.string("name"), [owner, read](double) {
+                         return from_structure_rank(*owner, owner->plate ? read(*owner->plate) : 0.0);
+                       }};
+  };
+}
 
 std::shared_ptr<Schema> keys(std::vector<Key> list) {
   auto s = std::make_shared<Schema>();
@@ -86,6 +121,65 @@ Registry<ProbeFactory> build_registry() {
         fluid_probe([](const sph::Fluid& f) { return f.kinetic_energy(); }));
   r.add("max_density_variation", "max |rho - rho0| / rho0 over the water [-]", keys({}),
         fluid_probe([](const sph::Fluid& f) { return f.max_density_variation(); }));
+  r.add("displacement", "displacement of a named plate node [m]",
+        keys({Key::string("node", "top_left, top_centre, top_right, ...").required(),
+              Key::choice("component", "which component", {"x", "y"}).required()}),
+        [](const scene::Node& p, Parts& parts) {
+          const auto& s = parts.require_structure(p.path());
+          const std::string node = p.string("node");
+          const auto mesh = structure::make_plate_mesh(s.params.geometry);
+          if (!mesh.named_nodes.count(node))
+            HALFETI_USER_ERROR(p.key_path("node") << ": no plate node named '" << node << "'");
+          const int id = mesh.named_nodes.at(node), c = p.string("component") == "x" ? 0 : 1;
+          const Parts* owner = &parts;
+          return ProbeColumn{p.string("name"), [owner, id, c](double) {
+                               return from_structure_rank(*owner, owner->plate ? owner->plate->displacement(id)[c] : 0.0);
+                             }};
+        });
+  r.add("strain_energy", "strain energy of the plate per unit depth [J/m]", keys({}),
+        structure_probe([](const structure::PlateSolver& s) { return s.strain_energy(); }));
+  r.add("structure_kinetic_energy", "kinetic energy of the plate per unit depth [J/m]", keys({}),
+        structure_probe([](const structure::PlateSolver& s) { return s.kinetic_energy(); }));
+  r.add("max_von_mises", "largest von Mises (Cauchy) stress in the plate [Pa]", keys({}),
+        structure_probe([](const structure::PlateSolver& s) { return s.max_von_mises(); }));
+  r.add("cable_tension", "tension of one real cable of a set, at one end: stress [Pa] or force [N]",
+        keys({Key::string("cable", "cable name").required(),
+              Key::choice("end", "which end", {"anchor", "plate"}).def("plate"),
+              Key::choice("quantity", "stress of one cable, or its force", {"stress", "force"}).def("stress")}),
+        [](const scene::Node& p, Parts& parts) {
+          const int i = parts.cable_index(p.path(), p.string("cable"));
+          const bool at_plate = p.string("end") == "plate", stress = p.string("quantity") == "stress";
+          const Parts* owner = &parts;
+          return ProbeColumn{p.string("name"), [owner, i, at_plate, stress](double) {
+                               double v = 0.0;
+                               if (owner->structure_rank) {
+                                 const auto& sol = owner->cables[i]->last_solution();
+                                 const double t = at_plate ? sol.tension_end : sol.tension_start;
+                                 const auto& set = owner->cable_setups[i].set;
+                                 v = stress ? cable::tension_stress(set, t) : cable::tension_per_cable(set, t);
+                               }
+                               return from_structure_rank(*owner, v);
+                             }};
+        });
+  r.add("cable_slack", "1 when the cable's chord is shorter than its unstretched length, else 0 [-]",
+        keys({Key::string("cable", "cable name").required()}), [](const scene::Node& p, Parts& parts) {
+          const int i = parts.cable_index(p.path(), p.string("cable"));
+          const Parts* owner = &parts;
+          return ProbeColumn{p.string("name"), [owner, i](double) {
+                               const bool slack = owner->structure_rank &&
+                                                  owner->cables[i]->last_solution().state == cable::CableState::kSlack;
+                               return from_structure_rank(*owner, slack ? 1.0 : 0.0);
+                             }};
+        });
+  r.add("cable_chord", "distance between the cable's two ends [m]",
+        keys({Key::string("cable", "cable name").required()}), [](const scene::Node& p, Parts& parts) {
+          const int i = parts.cable_index(p.path(), p.string("cable"));
+          const Parts* owner = &parts;
+          return ProbeColumn{p.string("name"), [owner, i](double) {
+                               return from_structure_rank(*owner,
+                                                          owner->structure_rank ? owner->cables[i]->last_solution().chord : 0.0);
+                             }};
+        });
   return r;
 }
 

@@ -2,6 +2,7 @@
 
 #include "halfeti/app/fluid_section.hpp"
 #include "halfeti/app/probes.hpp"
+#include "halfeti/app/structure_section.hpp"
 #include "halfeti/excitation/excitation_scene.hpp"
 
 namespace halfeti::app {
@@ -52,6 +53,8 @@ std::shared_ptr<const Schema> scene_schema() {
     s->add(Key::section("tank", "the tank", tank_schema()));
     s->add(Key::section("excitation", "ground motion", excitation::excitation_schema()).always());
     s->add(Key::section("fluid", "the water (delta-SPH)", fluid_schema()));
+    s->add(Key::section("structure", "the rubber plate (finite elements)", structure_schema()));
+    s->add(Key::list("cables", "cable sets holding the plate", cable_schema()));
     s->add(Key::list("probes", "columns of probes.csv", probe_schema()));
     return std::shared_ptr<const Schema>(s);
   }();

@@ -49,7 +49,52 @@ void build_parameters(const scene::Scene& scene, Parts& parts) {
   parts.motion = excitation::make_ground_motion(root.section("excitation"), parts.scene_dir);
   const double end = root.section("scene").real("end_time");
   if (root.has("fluid")) parts.fluid_params = fluid_params(root, peak_ground_acceleration(*parts.motion, end));
+  if (root.has("structure")) parts.structure_setup = structure_setup(root);
+  if (!root.list("cables").empty() && !parts.structure_setup)
+    HALFETI_USER_ERROR("cables: need a `structure:` to hold (the plate they attach to)");
+  if (parts.structure_setup)
+    parts.cable_setups =
+        cable_setups(root, *parts.structure_setup, parts.fluid_params ? parts.fluid_params->density : 0.0);
+  if (parts.fluid_params && parts.structure_setup)
+    HALFETI_USER_ERROR("structure: a plate in water needs the fluid-structure coupling, which this build does not "
+                       "have yet; run the plate without `fluid:` or the water without `structure:`");
 }
+
+namespace {
+
+// The plate and its cables live on world rank 0 (one rank: the structure's own communicator).
+void build_structure(Parts& parts, MPI_Comm comm) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm sub = MPI_COMM_NULL;
+  MPI_Comm_split(comm, rank == 0 ? 0 : MPI_UNDEFINED, 0, &sub);
+  parts.structure_comm = Communicator::adopt(sub);
+  parts.structure_rank = rank == 0;
+  if (!parts.structure_rank) return;
+  const StructureSetup& s = *parts.structure_setup;
+  parts.plate = std::make_unique<structure::PlateSolver>(parts.structure_comm.get(), s.params, parts.motion.get());
+  for (const auto& l : s.point_loads) parts.plate->add_point_load(parts.plate->mesh().node(l.node), l.force);
+  for (const auto& c : parts.cable_setups) {
+    const int node = parts.plate->mesh().node(c.node);
+    parts.cables.push_back(std::make_unique<cable::CableElement>(c.anchor, node,
+                                                                 cable::cable_properties(c.set, c.unstretched_length)));
+    parts.plate->add_nodal_element(parts.cables.back().get());
+  }
+  // One evaluation at the initial geometry, so that t = 0 probes read the initial tension.
+  for (auto& c : parts.cables) {
+    const int node = c->nodes()[0];
+    Eigen::VectorXd f;
+    Eigen::MatrixXd k;
+    c->evaluate({parts.plate->position(node)}, f, k);
+  }
+}
+
+// Mass per unit length of a cable set per unit depth that feels the tank's inertial load (as its weight does).
+double cable_line_mass(const CableSetup& c) {
+  return c.set.count * (c.set.density - c.set.fluid_density) * c.set.area / c.set.depth;
+}
+
+}  // namespace
 
 Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
     : comm_(comm), scene_(std::move(scene)), options_(std::move(options)) {
@@ -79,6 +124,11 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
     fluid_fields_ = std::make_unique<io::FieldSeries>(comm_, out_dir_ + "/fields", "fluid");
     checkpoints_ = std::make_unique<io::FieldSeries>(comm_, out_dir_ + "/checkpoints", "fluid_state");
   }
+  if (parts_.structure_setup) {
+    ScopedTimer timer(timers_, "setup");
+    build_structure(parts_, comm_);
+    plate_fields_ = std::make_unique<io::FieldSeries>(comm_, out_dir_ + "/fields", "plate");
+  }
   std::vector<std::string> names;
   for (const auto& p : probes_) names.push_back(p.name);
   probe_out_ = std::make_unique<io::ProbeWriter>(out_dir_ + "/probes.csv", names, rank_ == 0);
@@ -102,13 +152,54 @@ void Simulation::announce() {
        << (f->params().scheme == sph::Scheme::kDeltaSph ? "delta-SPH" : "standard SPH");
     log_->line(os.str());
   }
-  if (!parts_.fluid) log_->line("no fluid: the clock advances by the probe interval");
+  if (parts_.structure_setup) {
+    const auto& p = parts_.structure_setup->params;
+    std::ostringstream os;
+    os << "structure: plate " << p.geometry.thickness << " x " << p.geometry.height << " m, "
+       << p.geometry.cells_across << " x " << p.geometry.cells_along << " Q9 elements ("
+       << 2 * (2 * p.geometry.cells_across + 1) * (2 * p.geometry.cells_along + 1) << " dofs), E = "
+       << p.material.youngs_modulus << " Pa, nu = " << p.material.poisson_ratio << ", rho = " << p.material.density
+       << " kg/m^3, on 1 rank";
+    log_->line(os.str());
+  }
+  for (const auto& c : parts_.cable_setups) {
+    log_->line(cable::describe_per_depth(c.set, c.name));
+    std::ostringstream os;
+    os << "cable " << c.name << ": anchor [" << c.anchor.x() << ", " << c.anchor.y() << "] to " << c.node
+       << ", unstretched length " << c.unstretched_length << " m";
+    if (c.initial_stress > 0) os << " (from the initial stress " << c.initial_stress << " Pa)";
+    log_->line(os.str());
+  }
+  if (!parts_.fluid && !parts_.structure_setup) log_->line("no parts: the clock advances by the probe interval");
+}
+
+void Simulation::prepare_structure() {
+  if (!parts_.plate || !parts_.structure_setup) return;
+  if (parts_.structure_setup->start_static) {
+    const auto report = parts_.plate->solve_static(0.0, 10);
+    log_->line("structure: static equilibrium in " + std::to_string(report.newton_iterations) + " Newton iterations");
+  }
+  parts_.plate->initialise_acceleration(0.0);
+}
+
+void Simulation::step_structure(double t, double dt) {
+  if (!parts_.plate) return;
+  ScopedTimer timer(timers_, "structure");
+  const double ag = parts_.motion->acceleration(t + dt);
+  for (size_t i = 0; i < parts_.cables.size(); ++i)
+    parts_.cables[i]->set_horizontal_load(-cable_line_mass(parts_.cable_setups[i]) * ag);
+  parts_.plate->step(t, dt);
 }
 
 double Simulation::advance(double remaining) {
   if (parts_.fluid) {
     parts_.fluid->step();
     return parts_.fluid->dt();
+  }
+  if (parts_.structure_setup) {
+    const double dt = std::min(parts_.structure_setup->time_step, remaining);
+    step_structure(t_, dt);
+    return dt;
   }
   return std::min(scene_.root().section("output").real("probe_interval"), remaining);
 }
@@ -122,7 +213,32 @@ void Simulation::sample(double t) {
   if (parts_.fluid) max_density_variation_ = std::max(max_density_variation_, parts_.fluid->max_density_variation());
 }
 
+void Simulation::write_plate_fields(double t) {
+  if (!plate_fields_) return;
+  ScopedTimer timer(timers_, "fields");
+  std::vector<double> x, y, ux, uy;
+  std::vector<std::int64_t> cells;
+  if (const auto* plate = parts_.plate.get()) {
+    const auto& mesh = plate->mesh();
+    for (int n = 0; n < plate->node_count(); ++n) {
+      const Eigen::Vector2d p = plate->position(n), u = plate->displacement(n);
+      x.push_back(p.x());
+      y.push_back(p.y());
+      ux.push_back(u.x());
+      uy.push_back(u.y());
+    }
+    // Each Q9 (tensor order a = i + 3 j) drawn as its four linear quadrilaterals.
+    for (const auto& e : mesh.elements)
+      for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i)
+          for (int a : {i + 3 * j, i + 1 + 3 * j, i + 1 + 3 * (j + 1), i + 3 * (j + 1)}) cells.push_back(e[a]);
+  }
+  io::CellBlock block{"Quadrilateral", 4, cells.data(), cells.size() / 4};
+  plate_fields_->write(t, x.size(), x.data(), y.data(), {{"ux", ux.data()}, {"uy", uy.data()}}, &block);
+}
+
 void Simulation::write_fields(double t) {
+  write_plate_fields(t);
   if (!parts_.fluid) return;
   ScopedTimer timer(timers_, "fields");
   const sph::Fluid& f = *parts_.fluid;
@@ -166,6 +282,7 @@ void Simulation::run() {
   const double start = wall_now();
   announce();
   if (parts_.fluid) initial_mass_ = parts_.fluid->total_mass();
+  prepare_structure();
 
   double next_probe = probe_dt, next_field = field_dt, next_checkpoint = checkpoint_dt, next_progress = progress_dt;
   sample(t_);
@@ -222,6 +339,10 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
   const double mass = parts_.fluid ? parts_.fluid->total_mass() : 0.0;
   PhaseTimers timers = timers_;
   if (parts_.fluid) timers.merge(parts_.fluid->timers());
+  const long long dofs = parts_.structure_setup
+                             ? 2LL * (2 * parts_.structure_setup->params.geometry.cells_across + 1) *
+                                   (2 * parts_.structure_setup->params.geometry.cells_along + 1)
+                             : 0;
   if (rank_ != 0) return;
   const scene::Node root = scene_.root();
   io::Json j = io::Json::object();
@@ -231,7 +352,8 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
   if (root.section("scene").has("description")) j.set("description", root.section("scene").string("description"));
   j.set("ranks", size_);
   j.set("particles", particles);
-  j.set("structure_dofs", 0);
+  j.set("structure_dofs", dofs);
+  j.set("cables", static_cast<int>(parts_.cable_setups.size()));
   j.set("steps", steps_);
   j.set("simulated_time", t_);
   j.set("wall_time", wall);

@@ -5,11 +5,16 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "halfeti/app/structure_section.hpp"
+#include "halfeti/cable/cable_element.hpp"
+#include "halfeti/core/communicator.hpp"
 #include "halfeti/core/scene.hpp"
 #include "halfeti/excitation/ground_motion.hpp"
 #include "halfeti/sph/fluid.hpp"
 #include "halfeti/sph/params.hpp"
+#include "halfeti/structure/plate_solver.hpp"
 
 namespace halfeti::app {
 
@@ -21,8 +26,19 @@ struct Parts {
   std::optional<sph::FluidParams> fluid_params;  // the scene has `fluid:`
   std::unique_ptr<sph::Fluid> fluid;             // built for a run
 
-  // Throws UserError naming `who` when the scene has no fluid.
+  std::optional<StructureSetup> structure_setup;  // the scene has `structure:`
+  std::vector<CableSetup> cable_setups;           // the scene's `cables:`
+  // The structure lives on world rank 0 (its own communicator); other ranks hold nulls and receive what probes
+  // and the coupling need by broadcast.
+  Communicator structure_comm;
+  std::unique_ptr<structure::PlateSolver> plate;
+  std::vector<std::unique_ptr<cable::CableElement>> cables;
+  bool structure_rank = false;
+
+  // Throw UserError naming `who` when the scene lacks the part.
   const sph::FluidParams& require_fluid(const std::string& who) const;
+  const StructureSetup& require_structure(const std::string& who) const;
+  int cable_index(const std::string& who, const std::string& name) const;
 };
 
 }  // namespace halfeti::app

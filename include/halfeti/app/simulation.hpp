@@ -44,7 +44,10 @@ class Simulation {
   void announce();
   double advance(double remaining);  // one step of every part; returns the step taken
   void sample(double t);
+  void prepare_structure();
+  void step_structure(double t, double dt);
   void write_fields(double t);
+  void write_plate_fields(double t);
   void write_checkpoint(const std::string& label);
   void write_summary(const std::string& status, double wall, double loop_wall);
   std::string progress_line(double dt, double wall) const;
@@ -59,7 +62,7 @@ class Simulation {
   std::vector<ProbeColumn> probes_;
   std::unique_ptr<io::ProbeWriter> probe_out_;
   std::unique_ptr<io::RunLog> log_;
-  std::unique_ptr<io::FieldSeries> fluid_fields_, checkpoints_;
+  std::unique_ptr<io::FieldSeries> fluid_fields_, plate_fields_, checkpoints_;
   PhaseTimers timers_;
   double t_ = 0.0;
   long long steps_ = 0;

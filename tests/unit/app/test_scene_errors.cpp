@@ -29,8 +29,11 @@ const Case kCases[] = {
     {"text for a number", "scene: {name: s, end_time: soon}\n",
      "bad.yaml:1:28: scene.end_time: expected a number > 0 and <= 10000 (s), found 'soon'"},
     {"near-miss key", "scene: {name: s, end_tme: 1}\n", "bad.yaml:1:18: unknown key 'scene.end_tme'; did you mean 'end_time'?"},
-    {"unknown section", "scene: {name: s, end_time: 1}\nfluids: {}\n",
-     "bad.yaml:2:1: unknown key 'fluids'; expected one of: scene, output, gravity, tank, excitation, fluid, probes"},
+    {"unknown section", "scene: {name: s, end_time: 1}\nwather: {}\n",
+     "bad.yaml:2:1: unknown key 'wather'; expected one of: scene, output, gravity, tank, excitation, fluid, "
+     "structure, cables, probes"},
+    {"near-miss section", "scene: {name: s, end_time: 1}\nfluids: {}\n",
+     "bad.yaml:2:1: unknown key 'fluids'; did you mean 'fluid'?"},
     {"unknown choice", "scene: {name: s, end_time: 1}\nexcitation: {kind: sine}\n",
      "bad.yaml:2:20: excitation.kind: expected one of none, sine_pulse, cosine_pulse, record, found 'sine'; did you mean 'none'?"},
     {"pulse without period", "scene: {name: s, end_time: 1}\nexcitation: {kind: sine_pulse, amplitude: 2}\n",

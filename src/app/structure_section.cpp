@@ -1,0 +1,191 @@
+#include "halfeti/app/structure_section.hpp"
+
+#include <set>
+
+#include "halfeti/cable/catenary.hpp"
+#include "halfeti/core/error.hpp"
+#include "halfeti/core/registry.hpp"
+#include "halfeti/structure/plate_mesh.hpp"
+
+namespace halfeti::app {
+
+using scene::Key;
+using scene::Schema;
+
+namespace {
+
+const Registry<structure::MaterialModel>& material_registry() {
+  static const Registry<structure::MaterialModel> r = [] {
+    Registry<structure::MaterialModel> m;
+    m.add("neo_hookean", "compressible Neo-Hookean (large strains)", nullptr, structure::MaterialModel::kNeoHookean);
+    m.add("saint_venant_kirchhoff", "St. Venant-Kirchhoff (moderate strains)", nullptr,
+          structure::MaterialModel::kStVenantKirchhoff);
+    return m;
+  }();
+  return r;
+}
+
+const Registry<structure::PlaneHypothesis>& hypothesis_registry() {
+  static const Registry<structure::PlaneHypothesis> r = [] {
+    Registry<structure::PlaneHypothesis> h;
+    h.add("plane_strain", "the plate spans the tank's width (default)", nullptr,
+          structure::PlaneHypothesis::kPlaneStrain);
+    h.add("plane_stress", "a thin free-edged strip", nullptr, structure::PlaneHypothesis::kPlaneStress);
+    return h;
+  }();
+  return r;
+}
+
+std::shared_ptr<Schema> load_schema() {
+  auto s = std::make_shared<Schema>("A dead point load on a named node (tests and static cases).");
+  s->add(Key::string("node", "named node: top_left, top_centre, top_right, base_left, ...").required());
+  s->add(Key::point("force", "force per unit depth", "N/m").required());
+  return s;
+}
+
+}  // namespace
+
+std::shared_ptr<const Schema> structure_schema() {
+  static const std::shared_ptr<const Schema> schema = [] {
+    auto s = std::make_shared<Schema>(
+        "The rubber plate: a 2D large-deformation solid of Q9 elements, clamped at its base, per unit depth.");
+    s->add(Key::point("base", "centre of the clamped base", "m").required());
+    s->add(Key::real("height", "plate height", "m").def(0.08).positive().at_most(100.0));
+    s->add(Key::real("thickness", "plate thickness", "m").def(0.003).positive().at_most(100.0));
+    s->add(Key::integer("cells_across", "Q9 cells through the thickness").def(2).in(1, 64));
+    s->add(Key::integer("cells_along", "Q9 cells along the height (2 x 60 is the paper's 120)").def(60).in(1, 4096));
+    s->add(Key::choice("material", "hyperelastic law", material_registry().names()).def("neo_hookean"));
+    s->add(Key::real("youngs_modulus", "E", "Pa").def(10e6).positive());
+    s->add(Key::real("poisson_ratio", "nu (rubber 0.45-0.49)").def(0.45).above(-1.0).below(0.5));
+    s->add(Key::real("density", "rubber density (not stated by the paper)", "kg/m^3").def(1150.0).positive());
+    s->add(Key::choice("hypothesis", "out-of-plane hypothesis", hypothesis_registry().names()).def("plane_strain"));
+    s->add(Key::real("newmark_beta", "Newmark beta (1/4: trapezoidal rule)").def(0.25).above(0.0).at_most(0.5));
+    s->add(Key::real("newmark_gamma", "Newmark gamma (1/2: no numerical damping)").def(0.5).in(0.5, 1.0));
+    s->add(Key::integer("newton_max_iterations", "Newton iterations per step before the run stops").def(25)
+               .in(1, 1000));
+    s->add(Key::real("newton_rtol", "Newton: residual reduction that counts as converged").def(1e-8).above(0.0)
+               .below(1.0));
+    s->add(Key::real("time_step", "step of a scene without water (with water the fluid sets it)", "s").positive());
+    s->add(Key::boolean("start_static", "solve the static equilibrium (gravity, cables, loads) before t = 0")
+               .def(false));
+    s->add(Key::list("loads", "dead point loads", load_schema()));
+    return std::shared_ptr<const Schema>(s);
+  }();
+  return schema;
+}
+
+std::shared_ptr<const Schema> cable_schema() {
+  static const std::shared_ptr<const Schema> schema = [] {
+    auto s = std::make_shared<Schema>(
+        "A set of real cables side by side across the tank's width, from a wall anchor to a named plate node, "
+        "modelled per unit depth as one two-node catenary element (section 2.2). Give exactly one of "
+        "unstretched_length and initial_stress. The water does not act on cables (as in the paper).");
+    s->add(Key::string("name", "name used by probes").required());
+    s->add(Key::point("anchor", "fixed end on a tank wall", "m").required());
+    s->add(Key::string("node", "plate node it holds: top_left, top_centre, top_right, ...").required());
+    s->add(Key::integer("count", "real cables across the tank's width").def(1).in(1, 100000));
+    s->add(Key::real("area", "cross-section of one cable", "m^2").required().positive());
+    s->add(Key::real("modulus", "Young's modulus of the cable", "Pa").required().positive());
+    s->add(Key::real("density", "cable density", "kg/m^3").required().positive());
+    s->add(Key::boolean("submerged", "buoyant in the water (weight uses density - water density)").def(true));
+    s->add(Key::real("unstretched_length", "unstretched length L0", "m").positive());
+    s->add(Key::real("initial_stress", "tension stress at the plate end in the initial state", "Pa").positive());
+    return std::shared_ptr<const Schema>(s);
+  }();
+  return schema;
+}
+
+StructureSetup structure_setup(const scene::Node& root) {
+  const scene::Node s = root.section("structure");
+  StructureSetup out;
+  auto& p = out.params;
+  const auto base = s.point("base");
+  p.geometry.base_centre = {base[0], base[1]};
+  p.geometry.height = s.real("height");
+  p.geometry.thickness = s.real("thickness");
+  p.geometry.cells_across = static_cast<int>(s.integer("cells_across"));
+  p.geometry.cells_along = static_cast<int>(s.integer("cells_along"));
+  p.material.model = material_registry().get(s.string("material")).make;
+  p.material.youngs_modulus = s.real("youngs_modulus");
+  p.material.poisson_ratio = s.real("poisson_ratio");
+  p.material.density = s.real("density");
+  p.material.hypothesis = hypothesis_registry().get(s.string("hypothesis")).make;
+  p.newmark.beta = s.real("newmark_beta");
+  p.newmark.gamma = s.real("newmark_gamma");
+  p.newton.max_iterations = static_cast<int>(s.integer("newton_max_iterations"));
+  p.newton.residual_rtol = s.real("newton_rtol");
+  p.gravity = {0.0, -root.real("gravity")};
+  if (root.has("tank")) {
+    const scene::Node tank = root.section("tank");
+    const double half = 0.5 * p.geometry.thickness;
+    if (base[0] - half < 0 || base[0] + half > tank.real("length") || base[1] < 0 ||
+        base[1] + p.geometry.height > tank.real("height"))
+      HALFETI_USER_ERROR(s.path() << ": the plate (base [" << base[0] << ", " << base[1] << "], "
+                                  << p.geometry.thickness << " x " << p.geometry.height
+                                  << " m) does not fit in the tank");
+  }
+  if (s.has("time_step")) out.time_step = s.real("time_step");
+  if (!root.has("fluid") && !s.has("time_step"))
+    HALFETI_USER_ERROR(s.key_path("time_step") << ": required when the scene has no `fluid:` (the water sets the "
+                                               << "step otherwise)");
+  out.start_static = s.boolean("start_static");
+  const structure::PlateMesh names_only = structure::make_plate_mesh(p.geometry);
+  for (const auto& l : s.list("loads")) {
+    const std::string node = l.string("node");
+    if (!names_only.named_nodes.count(node))
+      HALFETI_USER_ERROR(l.key_path("node") << ": no node named '" << node << "' (the plate has top_left, "
+                                            << "top_centre, top_right, base_left, base_centre, base_right)");
+    const auto f = l.point("force");
+    out.point_loads.push_back({node, {f[0], f[1]}});
+  }
+  structure::validate(p);
+  return out;
+}
+
+std::vector<CableSetup> cable_setups(const scene::Node& root, const StructureSetup& plate, double fluid_density) {
+  std::vector<CableSetup> out;
+  const auto cables = root.list("cables");
+  if (cables.empty()) return out;
+  if (!root.has("structure")) HALFETI_USER_ERROR("cables: need a `structure:` to hold (the plate they attach to)");
+  const structure::PlateMesh mesh = structure::make_plate_mesh(plate.params.geometry);
+  const double width = root.has("tank") ? root.section("tank").real("width") : 1.0;
+  std::set<std::string> names;
+  for (const auto& c : cables) {
+    CableSetup cs;
+    cs.name = c.string("name");
+    if (!names.insert(cs.name).second) HALFETI_USER_ERROR(c.key_path("name") << ": cable name '" << cs.name << "' used twice");
+    const auto a = c.point("anchor");
+    cs.anchor = {a[0], a[1]};
+    cs.node = c.string("node");
+    const auto it = mesh.named_nodes.find(cs.node);
+    if (it == mesh.named_nodes.end())
+      HALFETI_USER_ERROR(c.key_path("node") << ": no plate node named '" << cs.node
+                                            << "' (top_left, top_centre, top_right, base_left, base_centre, base_right)");
+    cs.set.count = static_cast<int>(c.integer("count"));
+    cs.set.area = c.real("area");
+    cs.set.modulus = c.real("modulus");
+    cs.set.density = c.real("density");
+    cs.set.depth = width;
+    cs.set.fluid_density = c.boolean("submerged") ? fluid_density : 0.0;
+    cs.set.gravity = root.real("gravity");
+    const bool has_length = c.has("unstretched_length"), has_stress = c.has("initial_stress");
+    if (has_length == has_stress)
+      HALFETI_USER_ERROR(c.path() << ": give exactly one of unstretched_length and initial_stress");
+    const Eigen::Vector2d node_position = mesh.nodes[it->second];
+    if ((node_position - cs.anchor).norm() < 1e-9)
+      HALFETI_USER_ERROR(c.key_path("anchor") << ": the anchor coincides with plate node '" << cs.node << "'");
+    if (has_length) {
+      cs.unstretched_length = c.real("unstretched_length");
+    } else {
+      cs.initial_stress = c.real("initial_stress");
+      const auto per_depth = cable::per_unit_depth(cs.set);
+      cs.unstretched_length = cable::unstretched_length_for_end_tension(
+          cs.anchor, node_position, per_depth.axial_stiffness, per_depth.weight_per_length,
+          cs.initial_stress * per_depth.area);
+    }
+    out.push_back(cs);
+  }
+  return out;
+}
+
+}  // namespace halfeti::app
