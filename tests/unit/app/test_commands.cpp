@@ -10,6 +10,7 @@
 #include "halfeti/app/probes.hpp"
 #include "halfeti/app/scene_schema.hpp"
 #include "halfeti/core/error.hpp"
+#include "halfeti/io/run_log.hpp"
 #include "halfeti/io/probe_writer.hpp"
 
 using namespace halfeti;
@@ -32,7 +33,7 @@ std::string file_text(const std::string& path) {
 }
 
 std::string write_scene(const std::string& name, const std::string& text) {
-  std::system(("mkdir -p " + kDir).c_str());
+  io::make_directories(kDir);
   const std::string path = kDir + "/" + name;
   std::ofstream(path) << text;
   return path;

@@ -8,6 +8,7 @@
 
 #include "halfeti/app/scene_schema.hpp"
 #include "halfeti/core/error.hpp"
+#include "halfeti/io/run_log.hpp"
 #include "halfeti/core/scene.hpp"
 
 using namespace halfeti;
@@ -79,7 +80,7 @@ TEST(SceneErrors, EachMalformedSceneGetsItsMessage) {
 
 TEST(SceneErrors, CheckCommandAnswersOneLineAndExitsTwo) {
   const std::string dir = std::string(HALFETI_BINARY_DIR) + "/scene_error_cases";
-  std::system(("mkdir -p " + dir).c_str());
+  io::make_directories(dir);
   for (const auto& c : kCases) {
     const std::string path = dir + "/bad.yaml";
     std::ofstream(path) << c.text;
