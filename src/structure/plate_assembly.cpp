@@ -202,10 +202,13 @@ void PlateSolver::build_scatter_map() {
 
 void PlateSolver::assemble_newton_system() {
   if (matrix_dirty_) {
+    // The pattern pass assembles once in static mode: keep the step's mode and Newton bookkeeping intact.
     const Mode mode = mode_;
+    const double first = first_residual_norm_;
     build_matrix();
     build_scatter_map();
     mode_ = mode;
+    first_residual_norm_ = first;
   }
   Mat a = matrix_.get();
   if (element_scatter_.empty()) {
