@@ -35,12 +35,18 @@ std::vector<std::vector<int>> PlateSolver::node_adjacency() const {
 
 void PlateSolver::build_matrix() {
   // Preallocated from the mesh graph (plus nodal elements), block size 2 = dofs per node.
+  // Block rows are this rank's nodes in PETSc order; a coupling is "diagonal" when both nodes are owned here.
   const auto adjacency = node_adjacency();
-  std::vector<PetscInt> blocks_per_row(node_count()), off_diagonal(node_count(), 0);
-  for (int n = 0; n < node_count(); ++n) blocks_per_row[n] = static_cast<PetscInt>(adjacency[n].size());
-  const PetscInt n = dof_count();
+  const int owned = partition_.owned_blocks;
+  std::vector<PetscInt> blocks_per_row(owned, 0), off_diagonal(owned, 0);
+  for (int n = 0; n < node_count(); ++n) {
+    if (partition_.node_rank[n] != rank_) continue;
+    const int row = partition_.petsc_node[n] - partition_.first_block;
+    for (int m : adjacency[n]) ++(partition_.node_rank[m] == rank_ ? blocks_per_row[row] : off_diagonal[row]);
+  }
+  const PetscInt n = dof_count(), n_local = 2 * owned;
   HALFETI_PETSC_CALL(MatCreate(comm_.get(), matrix_.out()));
-  HALFETI_PETSC_CALL(MatSetSizes(matrix_.get(), n, n, n, n));
+  HALFETI_PETSC_CALL(MatSetSizes(matrix_.get(), n_local, n_local, n, n));
   HALFETI_PETSC_CALL(MatSetBlockSize(matrix_.get(), 2));
   HALFETI_PETSC_CALL(MatSetType(matrix_.get(), MATAIJ));
   HALFETI_PETSC_CALL(MatSetOptionsPrefix(matrix_.get(), "structure_"));
@@ -74,14 +80,18 @@ void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& n
                                   : mode_ == Mode::kInitialAcceleration ? 1.0
                                                                         : 0.0;
   if (inertia_in_residual) update_acceleration();
-  residual_ = ramp_ * (load_factor_ * prescribed_loads_ + external_forces_ + body_forces_);
+  // External loads enter once (rank 0); each rank subtracts its own elements; the sum is formed below.
+  if (rank_ == 0)
+    residual_ = ramp_ * (load_factor_ * prescribed_loads_ + external_forces_ + body_forces_);
+  else
+    residual_.setZero();
 
   Q9Vector force;
   Q9Matrix tangent;
   RowMajor18 element_matrix;
-  for (std::size_t e = 0; e < mesh_.elements.size(); ++e) {
+  for (int e : partition_.owned_elements) {
     const auto& nodes = mesh_.elements[e];
-    const Q9Coordinates x = current(static_cast<int>(e));
+    const Q9Coordinates x = current(e);
     if (stiffness_coefficient != 0.0) {
       integrator_->internal_force_and_tangent(geometry_[e], x, force, tangent);
       element_matrix = tangent;
@@ -99,11 +109,13 @@ void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& n
       }
       residual_.segment<2>(2 * nodes[a]) -= force.segment<2>(2 * a) + inertia;
     }
-    element_sink(static_cast<int>(e), element_matrix.data());
+    element_sink(e, element_matrix.data());
   }
 
-  // Nodal elements (cables): their force is internal (enters as F), their tangent adds to K.
+  // Nodal elements (cables): their force is internal (enters as F), their tangent adds to K. Rank 0 evaluates
+  // them all (a cable is a handful of operations).
   for (NodalElement* ne : nodal_elements_) {
+    if (rank_ != 0) break;
     const std::vector<int> nodes = ne->nodes();
     std::vector<Eigen::Vector2d> positions;
     for (int n : nodes) positions.push_back(mesh_.nodes[n] + u_.segment<2>(2 * n));
@@ -122,6 +134,14 @@ void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& n
         stiffness_coefficient * ne_tangent;
     nodal_sink(dofs, values.data());
   }
+  if (size_ > 1) {
+    // Reduce to rank 0 and broadcast, so that every rank holds bitwise the same residual and takes the same
+    // Newton decisions.
+    Eigen::VectorXd total(dof_count());
+    MPI_Reduce(residual_.data(), total.data(), dof_count(), MPI_DOUBLE, MPI_SUM, 0, comm_.get());
+    if (rank_ == 0) residual_ = total;
+    MPI_Bcast(residual_.data(), dof_count(), MPI_DOUBLE, 0, comm_.get());
+  }
   for (int n : mesh_.clamped_nodes) residual_.segment<2>(2 * n).setZero();
   residual_norm_ = residual_.norm();
   if (first_residual_norm_ < 0.0) first_residual_norm_ = residual_norm_;
@@ -136,31 +156,36 @@ void PlateSolver::add_newton_system(Mat matrix, Vec rhs, PetscInt offset) {
     const auto& nodes = mesh_.elements[e];
     PetscInt rows[kQ9Dofs];
     // Negative indices make PETSc skip the clamped rows and columns.
+    const auto& to_petsc = partition_.petsc_node;
     if (blocked) {
-      for (int a = 0; a < kQ9Nodes; ++a) rows[a] = clamped_[nodes[a]] ? -1 : nodes[a] + offset / 2;
+      for (int a = 0; a < kQ9Nodes; ++a) rows[a] = clamped_[nodes[a]] ? -1 : to_petsc[nodes[a]] + offset / 2;
       HALFETI_PETSC_CALL(MatSetValuesBlocked(matrix, kQ9Nodes, rows, kQ9Nodes, rows, values, ADD_VALUES));
     } else {
       for (int a = 0; a < kQ9Nodes; ++a)
-        for (int c = 0; c < 2; ++c) rows[2 * a + c] = clamped_[nodes[a]] ? -1 : 2 * nodes[a] + c + offset;
+        for (int c = 0; c < 2; ++c) rows[2 * a + c] = clamped_[nodes[a]] ? -1 : 2 * to_petsc[nodes[a]] + c + offset;
       HALFETI_PETSC_CALL(MatSetValues(matrix, kQ9Dofs, rows, kQ9Dofs, rows, values, ADD_VALUES));
     }
   };
   auto nodal_sink = [&](const std::vector<int>& dofs, const double* values) {
     std::vector<PetscInt> idx(dofs.size());
-    for (std::size_t i = 0; i < dofs.size(); ++i) idx[i] = dofs[i] < 0 ? -1 : dofs[i] + offset;
+    for (std::size_t i = 0; i < dofs.size(); ++i) idx[i] = dofs[i] < 0 ? -1 : petsc_dof(dofs[i] / 2, dofs[i] % 2) + offset;
     const PetscInt k = static_cast<PetscInt>(idx.size());
     HALFETI_PETSC_CALL(MatSetValues(matrix, k, idx.data(), k, idx.data(), values, ADD_VALUES));
   };
   compute_newton_terms(element_sink, nodal_sink);
   for (int n : mesh_.clamped_nodes)
     for (int c = 0; c < 2; ++c) {
-      const PetscInt row = 2 * n + c + offset;
+      if (partition_.node_rank[n] != rank_) continue;
+      const PetscInt row = petsc_dof(n, c) + offset;
       HALFETI_PETSC_CALL(MatSetValue(matrix, row, row, 1.0, ADD_VALUES));
     }
   if (rhs != nullptr) {
-    std::vector<PetscInt> idx(dof_count());
-    for (int i = 0; i < dof_count(); ++i) idx[i] = i + offset;
-    HALFETI_PETSC_CALL(VecSetValues(rhs, dof_count(), idx.data(), residual_.data(), ADD_VALUES));
+    std::vector<PetscInt> idx;
+    std::vector<double> values;
+    for (int n = 0; n < node_count(); ++n)
+      if (partition_.node_rank[n] == rank_)
+        for (int c = 0; c < 2; ++c) idx.push_back(petsc_dof(n, c) + offset), values.push_back(residual_(2 * n + c));
+    HALFETI_PETSC_CALL(VecSetValues(rhs, static_cast<PetscInt>(idx.size()), idx.data(), values.data(), ADD_VALUES));
   }
 }
 

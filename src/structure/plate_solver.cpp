@@ -30,12 +30,11 @@ void validate(const StructureParameters& p) {
 
 PlateSolver::PlateSolver(MPI_Comm comm, const StructureParameters& params, const excitation::GroundMotion* ground)
     : comm_(comm), params_(params), ground_(ground) {
-  if (comm_.size() != 1)
-    HALFETI_USER_ERROR("structure.ranks = " << comm_.size()
-                                            << ": the structure solver runs on one rank in this version; "
-                                               "set structure.ranks: 1");
   validate(params_);
+  rank_ = comm_.rank();
+  size_ = comm_.size();
   mesh_ = make_plate_mesh(params_.geometry);
+  partition_ = partition_plate(mesh_, comm_.get());
   const auto& m = params_.material;
   material_ = make_material(m.model, m.youngs_modulus, m.poisson_ratio);
   integrator_ = std::make_unique<HyperelasticQ9>(*material_, Q9Options{m.hypothesis, m.selective_reduced_integration});
@@ -66,6 +65,8 @@ PlateSolver::PlateSolver(MPI_Comm comm, const StructureParameters& params, const
   // Reverse Cuthill-McKee keeps the LU factors of the banded plate narrow: measured fastest of nd, rcm, natural
   // and qmd for the 2 x 60 plate (docs/structure.md).
   HALFETI_PETSC_CALL(PCFactorSetMatOrderingType(pc, MATORDERINGRCM));
+  // PETSc's own LU is sequential; on several ranks the default direct solver is MUMPS.
+  if (size_ > 1) HALFETI_PETSC_CALL(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
   HALFETI_PETSC_CALL(KSPSetFromOptions(ksp_.get()));
 }
 
@@ -110,11 +111,8 @@ void PlateSolver::initialise_acceleration(double t) {
   ramp_ = 1.0;
   compute_external(t);
   assemble_newton_system();
-  Vec a0 = solve_newton_increment();
-  const PetscScalar* values = nullptr;
-  HALFETI_PETSC_CALL(VecGetArrayRead(a0, &values));
-  for (int i = 0; i < dof_count(); ++i) a_(i) = clamped_[i / 2] ? 0.0 : values[i];
-  HALFETI_PETSC_CALL(VecRestoreArrayRead(a0, &values));
+  a_ = gather_in_node_order(solve_newton_increment());
+  for (int n : mesh_.clamped_nodes) a_.segment<2>(2 * n).setZero();
 }
 
 void PlateSolver::begin_step(double t, double dt) {
@@ -175,10 +173,42 @@ void PlateSolver::apply_increment(const double* du) {
 }
 
 void PlateSolver::apply_increment(Vec du, PetscInt offset) {
+  if (size_ == 1) {
+    const PetscScalar* values = nullptr;
+    HALFETI_PETSC_CALL(VecGetArrayRead(du, &values));
+    apply_increment(values + offset);
+    HALFETI_PETSC_CALL(VecRestoreArrayRead(du, &values));
+    return;
+  }
+  HALFETI_CHECK(offset == 0, "on several ranks apply_increment takes the structure's own layout (offset 0)");
+  const Eigen::VectorXd increment = gather_in_node_order(du);
+  apply_increment(increment.data());
+}
+
+Eigen::VectorXd PlateSolver::gather_in_node_order(Vec v) {
+  Eigen::VectorXd out(dof_count());
+  if (size_ == 1) {
+    const PetscScalar* values = nullptr;
+    HALFETI_PETSC_CALL(VecGetArrayRead(v, &values));
+    std::copy(values, values + dof_count(), out.data());
+    HALFETI_PETSC_CALL(VecRestoreArrayRead(v, &values));
+    return out;
+  }
+  if (to_all_.get() == nullptr) HALFETI_PETSC_CALL(VecScatterCreateToAll(v, to_all_.out(), gathered_.out()));
+  HALFETI_PETSC_CALL(VecScatterBegin(to_all_.get(), v, gathered_.get(), INSERT_VALUES, SCATTER_FORWARD));
+  HALFETI_PETSC_CALL(VecScatterEnd(to_all_.get(), v, gathered_.get(), INSERT_VALUES, SCATTER_FORWARD));
   const PetscScalar* values = nullptr;
-  HALFETI_PETSC_CALL(VecGetArrayRead(du, &values));
-  apply_increment(values + offset);
-  HALFETI_PETSC_CALL(VecRestoreArrayRead(du, &values));
+  HALFETI_PETSC_CALL(VecGetArrayRead(gathered_.get(), &values));
+  for (int n = 0; n < node_count(); ++n)
+    for (int c = 0; c < 2; ++c) out(2 * n + c) = values[petsc_dof(n, c)];
+  HALFETI_PETSC_CALL(VecRestoreArrayRead(gathered_.get(), &values));
+  return out;
+}
+
+double PlateSolver::sum_over_ranks(double local) const {
+  double total = local;
+  if (size_ > 1) MPI_Allreduce(&local, &total, 1, MPI_DOUBLE, MPI_SUM, comm_.get());
+  return total;
 }
 
 bool PlateSolver::converged() const {
@@ -238,20 +268,19 @@ StepReport PlateSolver::solve_static(double t, int load_increments) {
 
 double PlateSolver::strain_energy() const {
   double e = 0.0;
-  for (std::size_t k = 0; k < mesh_.elements.size(); ++k)
-    e += integrator_->energy(geometry_[k], current(static_cast<int>(k)));
-  return e;
+  for (int k : partition_.owned_elements) e += integrator_->energy(geometry_[k], current(k));
+  return sum_over_ranks(e);
 }
 
 double PlateSolver::kinetic_energy() const {
   double e = 0.0;
-  for (std::size_t k = 0; k < mesh_.elements.size(); ++k) {
+  for (int k : partition_.owned_elements) {
     const auto& nodes = mesh_.elements[k];
     for (int a = 0; a < kQ9Nodes; ++a)
       for (int b = 0; b < kQ9Nodes; ++b)
         e += 0.5 * mass_[k](a, b) * v_.segment<2>(2 * nodes[a]).dot(v_.segment<2>(2 * nodes[b]));
   }
-  return e;
+  return sum_over_ranks(e);
 }
 
 double PlateSolver::element_von_mises(int element) const {
@@ -263,10 +292,11 @@ double PlateSolver::element_von_mises(int element) const {
 
 double PlateSolver::max_von_mises() const {
   double m = 0.0;
-  for (std::size_t k = 0; k < mesh_.elements.size(); ++k)
-    for (const auto& s : integrator_->cauchy_at_points(geometry_[k], current(static_cast<int>(k))))
-      m = std::max(m, von_mises(s));
-  return m;
+  for (int k : partition_.owned_elements)
+    for (const auto& s : integrator_->cauchy_at_points(geometry_[k], current(k))) m = std::max(m, von_mises(s));
+  double global = m;
+  if (size_ > 1) MPI_Allreduce(&m, &global, 1, MPI_DOUBLE, MPI_MAX, comm_.get());
+  return global;
 }
 
 }  // namespace halfeti::structure

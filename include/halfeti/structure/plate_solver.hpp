@@ -13,8 +13,12 @@
 //   while (!solver.converged());
 //   solver.end_step();
 //
-// step(t, dt) is exactly that loop with the plate alone. The structure runs on its own communicator; this version
-// runs on one rank and refuses more (UserError).
+// step(t, dt) is exactly that loop with the plate alone.
+//
+// Ranks: the structure runs on its own communicator. With more than one rank the elements are split by METIS,
+// the matrix is MPIAIJ in PETSc's numbering petsc_dof() (rows by owner rank) and solved with MUMPS; the state
+// (u, v, a), the residual and all probes stay replicated on every rank (the plate has ~1e3 dofs), so every rank
+// takes the same Newton decisions. On one rank PETSc's numbering is the node numbering.
 #pragma once
 
 #include <Eigen/Dense>
@@ -32,6 +36,7 @@
 #include "halfeti/structure/material.hpp"
 #include "halfeti/structure/petsc_owner.hpp"
 #include "halfeti/structure/plate_mesh.hpp"
+#include "halfeti/structure/plate_partition.hpp"
 #include "halfeti/structure/q9_element.hpp"
 
 namespace halfeti::structure {
@@ -86,6 +91,9 @@ class PlateSolver {
   int node_count() const { return static_cast<int>(mesh_.nodes.size()); }
   int dof_count() const { return 2 * node_count(); }
   static int dof(int node, int component) { return 2 * node + component; }
+  // Row of (node, component) in the PETSc matrix and vectors (equals dof() on one rank).
+  PetscInt petsc_dof(int node, int component) const { return 2 * partition_.petsc_node[node] + component; }
+  const PlatePartition& partition() const { return partition_; }
   bool is_clamped(int node) const { return clamped_[node]; }
 
   // ---- loads (R of eq. 21), all per unit depth ----
@@ -112,14 +120,17 @@ class PlateSolver {
   void begin_step(double t, double dt);  // dynamic: predictor, loads at t + dt
   void begin_static(double t);           // no inertia
   void assemble_newton_system();         // into newton_matrix() / newton_residual()
-  // Adds K_eff and r at rows/columns offset.. offset + dof_count() - 1 of a caller's matrix and vector (ADD_VALUES,
-  // no MatAssembly). Clamped rows get 1 on the diagonal. Preallocate with node_adjacency().
+  // Adds K_eff and r at rows/columns offset + petsc_dof() of a caller's matrix and vector (ADD_VALUES, no
+  // MatAssembly). Clamped rows get 1 on the diagonal. Preallocate with node_adjacency(). Collective: each rank
+  // adds its own elements and the residual of the rows it owns.
   void add_newton_system(Mat matrix, Vec rhs, PetscInt offset);
   Mat newton_matrix() const { return matrix_.get(); }
   Vec newton_residual() const { return rhs_.get(); }
   double residual_norm() const { return residual_norm_; }
   Vec solve_newton_increment();             // KSP on the owned system; throws NumericalError on failure
   void apply_increment(const double* du);   // dof_count() entries; clamped entries ignored
+  // On one rank any Vec (entries offset + petsc_dof()); on several, the Vec of solve_newton_increment() or one
+  // with the same layout (offset 0): it is gathered to every rank.
   void apply_increment(Vec du, PetscInt offset = 0);
   bool converged() const;
   void end_step();                          // commits u, v, a of t + dt
@@ -149,6 +160,8 @@ class PlateSolver {
   void assemble_local(Mode mode);  // residual_ and element matrices into matrix_ via add_newton_system
   Q9Coordinates current(int e) const;
   void update_acceleration();
+  Eigen::VectorXd gather_in_node_order(Vec v);  // a distributed Vec of the owned layout, on every rank
+  double sum_over_ranks(double local) const;
 
   Communicator comm_;
   StructureParameters params_;
@@ -161,6 +174,8 @@ class PlateSolver {
   Eigen::VectorXd mass_row_sum_;                                 // per node, for body forces
   std::vector<bool> clamped_;
   std::vector<NodalElement*> nodal_elements_;
+  PlatePartition partition_;
+  int rank_ = 0, size_ = 1;
 
   Eigen::VectorXd prescribed_loads_, external_forces_, body_forces_, residual_;
   Eigen::VectorXd u_, v_, a_, u_n_, v_n_, a_n_;
@@ -172,6 +187,8 @@ class PlateSolver {
   OwnedMat matrix_;
   OwnedVec rhs_, solution_;
   OwnedKsp ksp_;
+  OwnedVec gathered_;
+  PetscOwner<VecScatter, VecScatterDestroy> to_all_;
   bool matrix_dirty_ = true;
   // Position of every element matrix entry in the SeqAIJ value array (-1: clamped), so the owned matrix is
   // filled without PETSc's per-entry search (which cost ~40% of an iteration); empty for other matrix types.

@@ -1,0 +1,57 @@
+#include "halfeti/structure/plate_partition.hpp"
+
+#include <metis.h>
+
+#include <algorithm>
+#include <numeric>
+
+#include "halfeti/core/error.hpp"
+
+namespace halfeti::structure {
+
+PlatePartition partition_plate(const PlateMesh& mesh, MPI_Comm comm) {
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  const int ne = static_cast<int>(mesh.elements.size()), nn = static_cast<int>(mesh.nodes.size());
+  if (size > ne)
+    HALFETI_USER_ERROR("structure.ranks = " << size << " exceeds the plate's " << ne << " elements");
+  PlatePartition p;
+  p.element_rank.assign(ne, 0);
+  if (size > 1) {
+    if (rank == 0) {
+      // Dual graph on the corner nodes: two Q9 elements are neighbours when they share an edge (2 corners).
+      std::vector<idx_t> eptr(ne + 1), eind;
+      for (int e = 0; e < ne; ++e) {
+        for (int a : {0, 2, 8, 6}) eind.push_back(mesh.elements[e][a]);
+        eptr[e + 1] = static_cast<idx_t>(eind.size());
+      }
+      idx_t n_elements = ne, n_nodes = nn, common = 2, parts = size, cut = 0;
+      std::vector<idx_t> epart(ne), npart(nn);
+      idx_t options[METIS_NOPTIONS];
+      METIS_SetDefaultOptions(options);
+      options[METIS_OPTION_SEED] = 1;  // reproducible partitions
+      const int status = METIS_PartMeshDual(&n_elements, &n_nodes, eptr.data(), eind.data(), nullptr, nullptr,
+                                            &common, &parts, nullptr, options, &cut, epart.data(), npart.data());
+      HALFETI_CHECK(status == METIS_OK, "METIS_PartMeshDual failed with status " << status);
+      for (int e = 0; e < ne; ++e) p.element_rank[e] = static_cast<int>(epart[e]);
+    }
+    MPI_Bcast(p.element_rank.data(), ne, MPI_INT, 0, comm);
+  }
+  p.node_rank.assign(nn, size);
+  for (int e = 0; e < ne; ++e)
+    for (int n : mesh.elements[e]) p.node_rank[n] = std::min(p.node_rank[n], p.element_rank[e]);
+  std::vector<int> order(nn);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return p.node_rank[a] < p.node_rank[b]; });
+  p.petsc_node.assign(nn, -1);
+  for (int k = 0; k < nn; ++k) p.petsc_node[order[k]] = k;
+  for (int e = 0; e < ne; ++e)
+    if (p.element_rank[e] == rank) p.owned_elements.push_back(e);
+  p.first_block = static_cast<int>(std::count_if(p.node_rank.begin(), p.node_rank.end(), [rank](int r) { return r < rank; }));
+  p.owned_blocks = static_cast<int>(std::count(p.node_rank.begin(), p.node_rank.end(), rank));
+  HALFETI_CHECK(p.owned_blocks > 0, "rank " << rank << " owns no structure node");
+  return p;
+}
+
+}  // namespace halfeti::structure
