@@ -1,0 +1,85 @@
+// The saddle-point system of eq. 21 on the structure's rank, solved by Newton together with the plate:
+//
+//   [ K_eff + H_UU   H_Uy        -A_U^T ] [dU ]   [ r_s + A_U^T lambda              ]
+//   [ H_yU           M_p + H_yy  -A_y^T ] [dy ] = [ A_y^T lambda - M_p (y - y_pred) ]
+//   [ -A_U           -A_y         0     ] [dl ]   [ c(y, U)                         ]
+//
+// U: plate displacements (K_eff, r_s from PlateSolver::add_newton_system: Newmark-effective solid + cables),
+// y: invader positions, M_p = m 2/dt^2 (constant-acceleration mass participation), lambda: contact forces on the
+// invaders, c: the constraint of contact_constraint.hpp, A = dc/d(U, y), H = -d2(lambda . c). One sequential AIJ
+// matrix, fields ordered [plate dofs | invader dofs | multipliers]; KSP prefix "structure_contact_" (default
+// preonly + LU with MUMPS; PCFIELDSPLIT selectable with the splits "primal" and "contact"). See docs/coupling.md.
+#pragma once
+
+#include <Eigen/Dense>
+#include <petscksp.h>
+
+#include <string>
+#include <vector>
+
+#include "halfeti/core/timers.hpp"
+#include "halfeti/coupling/contact_constraint.hpp"
+#include "halfeti/coupling/contact_kinematics.hpp"
+#include "halfeti/structure/petsc_owner.hpp"
+#include "halfeti/structure/plate_solver.hpp"
+
+namespace halfeti::coupling {
+
+// One invader as the system sees it: predicted position, mass, and what the search froze for the step.
+struct ContactInvader {
+  Eigen::Vector2d predicted = Eigen::Vector2d::Zero();  // m, fluid's position at t + dt without contact
+  double mass = 0.0;                                    // kg/m
+  int segment = -1;                                     // index into mesh().surface
+  double eta = 0.0;                                     // eq. 20 at the search (kTied keeps it)
+  double target_gap = 0.0;                              // m, g* (0, or eq. 22's relocated gap)
+};
+
+struct ContactSolveReport {
+  int iterations = 0;                    // Newton iterations (linear solves)
+  std::vector<double> residual_history;  // ||force rows||_2 [N/m] at each assembly
+  std::vector<double> gap_history;       // ||c||_inf [m] at each assembly
+  double solve_seconds = 0.0;            // KSP time in this call
+};
+
+class ContactSystem {
+ public:
+  // solver: the plate, on this rank (the structure's communicator has one rank in this version).
+  ContactSystem(structure::PlateSolver& solver, ContactConstraint form,
+                std::string options_prefix = "structure_contact_");
+  ContactSystem(const ContactSystem&) = delete;
+  ContactSystem& operator=(const ContactSystem&) = delete;
+
+  // Newton on eq. 21 between solver.begin_step()/begin_static() and solver.end_step(). dt sets the mass
+  // participation 2 m / dt^2. `when` names the time in error messages. NumericalError on non-convergence.
+  ContactSolveReport solve(const std::vector<ContactInvader>& invaders, double dt, double when);
+
+  // After solve(): final invader positions, contact forces on them (N/m), and the contact forces on the plate's
+  // dofs (2 per node, clamped nodes included: there they are reactions carried by the clamp).
+  const std::vector<Eigen::Vector2d>& positions() const { return y_; }
+  const std::vector<Eigen::Vector2d>& forces() const { return force_; }
+  const Eigen::VectorXd& structure_forces() const { return structure_force_; }
+
+  // The current surface of the plate as a polyline (node positions at the current iterate).
+  static SurfacePolyline surface(const structure::PlateSolver& solver);
+
+  PhaseTimers& timers() { return timers_; }
+
+ private:
+  void build(const std::vector<ContactInvader>& invaders);
+  // Assembles the Jacobian and right-hand side at the current iterate; returns (force norm, gap inf-norm).
+  std::pair<double, double> assemble(const std::vector<ContactInvader>& invaders, double dt);
+  void solve_linear(double when);
+
+  structure::PlateSolver& solver_;
+  ContactConstraint form_;
+  std::string prefix_;
+  int n_struct_ = 0, n_inv_ = 0, rows_per_ = 1;
+  structure::OwnedMat matrix_;
+  structure::OwnedVec rhs_, solution_;
+  structure::OwnedKsp ksp_;
+  std::vector<Eigen::Vector2d> y_, lambda_, force_;
+  Eigen::VectorXd structure_force_;
+  PhaseTimers timers_;
+};
+
+}  // namespace halfeti::coupling

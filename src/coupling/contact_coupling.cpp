@@ -1,0 +1,170 @@
+// The coupled step: search (all ranks) -> gather (to root) -> eq. 21 with the plate (root) -> hand-back.
+#include "halfeti/coupling/contact_coupling.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "halfeti/core/error.hpp"
+
+namespace halfeti::coupling {
+
+void validate(const CouplingParameters& p) {
+  validate(p.ssosd);
+  if (!(p.inside_tolerance > 0.0))
+    HALFETI_USER_ERROR("coupling.inside_tolerance = " << p.inside_tolerance << " m must be > 0");
+}
+
+ContactCoupling::ContactCoupling(MPI_Comm world, structure::PlateSolver* solver, const CouplingParameters& params,
+                                 int root)
+    : comm_(world), root_(root), solver_(solver), params_(params) {
+  validate(params_);
+  rank_ = comm_.rank();
+  HALFETI_CHECK((rank_ == root_) == (solver_ != nullptr), "the plate solver must be given on the root rank only");
+  if (solver_ != nullptr) system_ = std::make_unique<ContactSystem>(*solver_, params_.constraint, params_.options_prefix);
+  broadcast_surface();
+}
+
+void ContactCoupling::broadcast_surface() {
+  int count = 0;
+  std::vector<double> flat;
+  if (rank_ == root_) {
+    surface_ = ContactSystem::surface(*solver_);
+    count = static_cast<int>(surface_.points.size());
+    for (const auto& p : surface_.points) flat.insert(flat.end(), {p.x(), p.y()});
+  }
+  MPI_Bcast(&count, 1, MPI_INT, root_, comm_.get());
+  flat.resize(2 * static_cast<std::size_t>(count));
+  MPI_Bcast(flat.data(), 2 * count, MPI_DOUBLE, root_, comm_.get());
+  if (rank_ != root_) {
+    surface_.points.resize(count);
+    surface_.nodes.assign(count, -1);  // node ids are the structure's business
+    for (int k = 0; k < count; ++k) surface_.points[k] = Eigen::Vector2d(flat[2 * k], flat[2 * k + 1]);
+  }
+}
+
+std::vector<sph::Barrier> ContactCoupling::outline() const {
+  std::vector<sph::Barrier> out;
+  for (int k = 0; k < surface_.segment_count(); ++k)
+    out.push_back({surface_.points[k].x(), surface_.points[k].y(), surface_.points[k + 1].x(),
+                   surface_.points[k + 1].y()});
+  return out;
+}
+
+PhaseTimers ContactCoupling::timers() const {
+  PhaseTimers all = timers_;
+  if (system_) all.merge(const_cast<ContactSystem&>(*system_).timers());
+  return all;
+}
+
+std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double dt, double layer,
+                                                              const std::vector<Invader>& gathered) {
+  const double when = t + dt;
+  std::vector<InvaderCorrection> corrections(gathered.size());
+  last_solve_ = ContactSolveReport{};
+  if (gathered.empty()) {
+    solver_->step(t, dt);  // nothing touches the plate: its own Newton loop
+    last_.newton_iterations = solver_->last_step().newton_iterations;
+    return corrections;
+  }
+  // Frozen data of the step from the surface at the start of the step (the plate's predictor is u_n):
+  // the contact segment, eta (eq. 20) and the target gap (eq. 22, or 0 without SSOSD).
+  std::vector<ContactInvader> invaders;
+  invaders.reserve(gathered.size());
+  for (const Invader& g : gathered) {
+    const Eigen::Vector2d x(g.x, g.y);
+    const ContactPoint c = closest_segment(surface_, x);
+    invaders.push_back({x, g.mass, c.segment, c.projection.eta, relocated_gap(c.projection.gap, layer)});
+  }
+  solver_->begin_step(t, dt);
+  last_solve_ = system_->solve(invaders, dt, when);
+  solver_->end_step();
+  last_.newton_iterations = last_solve_.iterations;
+
+  // Health: no invader may stay past the (new) surface.
+  const SurfacePolyline after = ContactSystem::surface(*solver_);
+  for (std::size_t k = 0; k < gathered.size(); ++k) {
+    const Eigen::Vector2d& y = system_->positions()[k];
+    const ContactPoint c = closest_segment(after, y);
+    if (c.projection.gap < -params_.inside_tolerance)
+      HALFETI_NUMERICAL_ERROR("particle " << gathered[k].gid << " left inside the plate after the contact solve ("
+                                          << c.projection.gap << " m past segment " << c.segment << ") at ("
+                                          << y.x() << ", " << y.y() << ") m");
+    const Eigen::Vector2d& f = system_->forces()[k];
+    InvaderCorrection& out = corrections[k];
+    out.dx = y.x() - gathered[k].x;
+    out.dy = y.y() - gathered[k].y;
+    // Delta C = C / m held over the step (eq. 4): the velocity changes by C dt / m.
+    out.dvx = f.x() * dt / gathered[k].mass;
+    out.dvy = f.y() * dt / gathered[k].mass;
+    out.fx = f.x();
+    out.fy = f.y();
+  }
+  return corrections;
+}
+
+const CouplingStepReport& ContactCoupling::step(double t, double dt, const InterfaceParticles& particles,
+                                                Corrections& out) {
+  last_ = CouplingStepReport{};
+  std::vector<Invader> local, gathered;
+  {
+    ScopedTimer timer(timers_, "search");
+    double u_max = 0.0;
+    for (std::size_t i = 0; i < particles.count; ++i)
+      u_max = std::max(u_max, std::hypot(particles.vx[i], particles.vy[i]));
+    MPI_Allreduce(MPI_IN_PLACE, &u_max, 1, MPI_DOUBLE, MPI_MAX, comm_.get());  // max is exact: rank-independent
+    last_.u_max = u_max;
+    last_.layer = layer_thickness(params_.ssosd, u_max, dt);
+    local = find_local_invaders(particles, surface_, last_.layer, rank_);
+  }
+  {
+    ScopedTimer timer(timers_, "gather");
+    gathered = gather_invaders(comm_.get(), root_, local);
+  }
+
+  // The structure's part runs on root; its outcome is broadcast so that every rank throws together.
+  std::vector<InvaderCorrection> corrections;
+  int failed = 0;
+  std::string message;
+  if (rank_ == root_) {
+    try {
+      corrections = solve_on_root(t, dt, last_.layer, gathered);
+    } catch (const Error& e) {
+      failed = e.kind() == ErrorKind::kNumerical ? 1 : 2;
+      std::ostringstream s;
+      s << "coupling step t = " << t << " -> " << t + dt << " s (" << gathered.size() << " invaders): " << e.what();
+      message = s.str();
+    }
+  }
+  MPI_Bcast(&failed, 1, MPI_INT, root_, comm_.get());
+  if (failed != 0) {
+    int length = static_cast<int>(message.size());
+    MPI_Bcast(&length, 1, MPI_INT, root_, comm_.get());
+    message.resize(static_cast<std::size_t>(length));
+    MPI_Bcast(message.data(), length, MPI_CHAR, root_, comm_.get());
+    if (failed == 1) throw NumericalError(message);
+    throw InternalError(message);
+  }
+
+  {
+    ScopedTimer timer(timers_, "handback");
+    scatter_corrections(comm_.get(), root_, gathered, corrections, particles, out);
+    double summary[5] = {static_cast<double>(gathered.size()), static_cast<double>(last_.newton_iterations), 0.0,
+                         0.0, 0.0};
+    for (const auto& c : corrections) {  // root only; gid order: a fixed summation order
+      summary[2] += c.fx;
+      summary[3] += c.fy;
+      summary[4] = std::max(summary[4], std::hypot(c.fx, c.fy));
+    }
+    MPI_Bcast(summary, 5, MPI_DOUBLE, root_, comm_.get());
+    last_.invaders = static_cast<int>(summary[0]);
+    last_.newton_iterations = static_cast<int>(summary[1]);
+    last_.force_x = summary[2];
+    last_.force_y = summary[3];
+    last_.max_force = summary[4];
+    broadcast_surface();
+  }
+  return last_;
+}
+
+}  // namespace halfeti::coupling

@@ -1,0 +1,54 @@
+// Contact kinematics of eq. 20. As printed, eq. 20 projects with n^T; the contact parameter along F -> S needs the
+// unit tangent (n . (r_inv - O - r_F) is zero by construction of the overlap O along n), see docs/coupling.md.
+#include "halfeti/coupling/contact_kinematics.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "halfeti/core/error.hpp"
+
+namespace halfeti::coupling {
+
+SegmentProjection project_on_segment(const Eigen::Vector2d& x, const Eigen::Vector2d& first,
+                                     const Eigen::Vector2d& second) {
+  SegmentProjection p;
+  const Eigen::Vector2d d = second - first;
+  p.length = d.norm();
+  HALFETI_CHECK(p.length > 0.0, "degenerate surface segment (zero length)");
+  p.tangent = d / p.length;
+  p.normal = Eigen::Vector2d(p.tangent.y(), -p.tangent.x());  // clockwise turn: outward for a CCW surface
+  const Eigen::Vector2d r = x - first;
+  p.eta = p.tangent.dot(r) / p.length;  // eq. 20 (tangent reading)
+  p.gap = p.normal.dot(r);
+  const double clamped = std::clamp(p.eta, 0.0, 1.0);
+  p.distance = (x - ((1.0 - clamped) * first + clamped * second)).norm();
+  return p;
+}
+
+ContactPoint closest_segment(const SurfacePolyline& surface, const Eigen::Vector2d& x) {
+  ContactPoint best;
+  for (int k = 0; k < surface.segment_count(); ++k) {
+    const SegmentProjection p = project_on_segment(x, surface.points[k], surface.points[k + 1]);
+    const bool closer = best.segment < 0 || p.distance < best.projection.distance;
+    const bool tie_in_front = best.segment >= 0 && p.distance == best.projection.distance &&
+                              p.gap > best.projection.gap;
+    if (closer || tie_in_front) {
+      best.segment = k;
+      best.projection = p;
+    }
+  }
+  return best;
+}
+
+BoundingBox bounding_box(const SurfacePolyline& surface) {
+  BoundingBox b;
+  if (surface.points.empty()) return b;
+  b.lo = b.hi = surface.points.front();
+  for (const auto& p : surface.points) {
+    b.lo = b.lo.cwiseMin(p);
+    b.hi = b.hi.cwiseMax(p);
+  }
+  return b;
+}
+
+}  // namespace halfeti::coupling
