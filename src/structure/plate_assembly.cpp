@@ -59,6 +59,7 @@ void PlateSolver::build_matrix() {
 }
 
 void PlateSolver::compute_external(double t) {
+  time_ = t;
   // Gravity and the tank frame's inertial force -a_g(t) (DESIGN, "The tank frame"), lumped through M's row sums:
   // for a uniform acceleration field b, the consistent nodal force M b equals (row sum of M) b exactly.
   Eigen::Vector2d body = params_.gravity;
@@ -92,12 +93,18 @@ void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& n
   for (int e : partition_.owned_elements) {
     const auto& nodes = mesh_.elements[e];
     const Q9Coordinates x = current(e);
-    if (stiffness_coefficient != 0.0) {
-      integrator_->internal_force_and_tangent(geometry_[e], x, force, tangent);
-      element_matrix = tangent;
-    } else {
-      integrator_->internal_force(geometry_[e], x, force);
-      element_matrix.setZero();
+    try {
+      if (stiffness_coefficient != 0.0) {
+        integrator_->internal_force_and_tangent(geometry_[e], x, force, tangent);
+        element_matrix = tangent;
+      } else {
+        integrator_->internal_force(geometry_[e], x, force);
+        element_matrix.setZero();
+      }
+    } catch (const NumericalError& error) {
+      const Eigen::Vector2d centre = x.row(4).transpose();
+      HALFETI_NUMERICAL_ERROR(error.what() << " in element " << e << " at (" << centre.x() << ", " << centre.y()
+                              << ") m, t = " << time_ << " s; hint: smaller dt, or check the loads");
     }
     const auto& m = mass_[e];
     for (int a = 0; a < kQ9Nodes; ++a) {

@@ -153,8 +153,8 @@ Vec PlateSolver::solve_newton_increment() {
       HALFETI_PETSC_CALL(PCGetFailedReason(pc, &pc_reason));
       detail = std::string(" (preconditioner: ") + PCFailedReasons[pc_reason] + ")";
     }
-    HALFETI_NUMERICAL_ERROR("structure: KSP solve failed, reason " << KSPConvergedReasons[reason] << detail
-                                                                   << "; try -structure_pc_type lu");
+    HALFETI_NUMERICAL_ERROR("structure: KSP solve failed at t = " << time_ << " s, reason "
+                            << KSPConvergedReasons[reason] << detail << "; try -structure_pc_type lu");
   }
   return solution_.get();
 }

@@ -180,6 +180,7 @@ class PlateSolver {
   Eigen::VectorXd prescribed_loads_, external_forces_, body_forces_, residual_;
   Eigen::VectorXd u_, v_, a_, u_n_, v_n_, a_n_;
   Mode mode_ = Mode::kStatic;
+  double time_ = 0.0;  // of the state being solved for (t + dt in a step), for error messages
   double dt_ = 0.0, load_factor_ = 1.0, ramp_ = 1.0;
   double residual_norm_ = 0.0, first_residual_norm_ = -1.0, increment_norm_ = -1.0;
   StepReport last_;

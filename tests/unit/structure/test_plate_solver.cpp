@@ -164,6 +164,17 @@ TEST(PlateSolver, NewtonFailureIsANumericalError) {
   }
 }
 
+TEST(PlateSolver, InvertedElementIsANumericalErrorWithItsPlace) {
+  hs::PlateSolver s(PETSC_COMM_WORLD, paper_plate(1, 10));
+  s.add_edge_load("top", Eigen::Vector2d(0.0, -5e7));  // Pa: crushes the top elements in the first iterate
+  try {
+    s.solve_static(0.0, 1);
+    FAIL() << "expected a NumericalError";
+  } catch (const halfeti::NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("in element"), std::string::npos) << e.what();
+  }
+}
+
 TEST(PlateSolver, KspFailureNamesPetscReason) {
   HALFETI_PETSC_CALL(PetscOptionsSetValue(nullptr, "-structure_ksp_type", "cg"));
   HALFETI_PETSC_CALL(PetscOptionsSetValue(nullptr, "-structure_pc_type", "none"));
