@@ -86,6 +86,26 @@ std::unique_ptr<Material> make_material(MaterialModel model, double youngs_modul
   HALFETI_CHECK(false, "unknown material model");
 }
 
+MaterialModel parse_material_model(const std::string& name) {
+  if (name == "neo_hookean") return MaterialModel::kNeoHookean;
+  if (name == "st_venant_kirchhoff") return MaterialModel::kStVenantKirchhoff;
+  HALFETI_USER_ERROR("structure.material.model: unknown '" << name << "' (known: neo_hookean, st_venant_kirchhoff)");
+}
+
+PlaneHypothesis parse_plane_hypothesis(const std::string& name) {
+  if (name == "plane_strain") return PlaneHypothesis::kPlaneStrain;
+  if (name == "plane_stress") return PlaneHypothesis::kPlaneStress;
+  HALFETI_USER_ERROR("structure.material.hypothesis: unknown '" << name << "' (known: plane_strain, plane_stress)");
+}
+
+std::string to_string(MaterialModel model) {
+  return model == MaterialModel::kNeoHookean ? "neo_hookean" : "st_venant_kirchhoff";
+}
+
+std::string to_string(PlaneHypothesis hypothesis) {
+  return hypothesis == PlaneHypothesis::kPlaneStrain ? "plane_strain" : "plane_stress";
+}
+
 PlaneResponse plane_response(const Material& material, const Eigen::Matrix2d& c, PlaneHypothesis hypothesis,
                              EnergyPart part) {
   PlaneResponse out;

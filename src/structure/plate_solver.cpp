@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "halfeti/core/error.hpp"
 
@@ -104,6 +105,27 @@ void PlateSolver::set_state(const Eigen::VectorXd& displacement, const Eigen::Ve
   u_ = displacement;
   v_ = velocity;
   for (int n : mesh_.clamped_nodes) u_.segment<2>(2 * n).setZero(), v_.segment<2>(2 * n).setZero();
+}
+
+void PlateSolver::set_state(const Eigen::VectorXd& displacement, const Eigen::VectorXd& velocity,
+                            const Eigen::VectorXd& acceleration) {
+  HALFETI_CHECK(acceleration.size() == dof_count(), "acceleration of wrong size");
+  set_state(displacement, velocity);
+  a_ = acceleration;
+  for (int n : mesh_.clamped_nodes) a_.segment<2>(2 * n).setZero();
+}
+
+std::string PlateSolver::summary() const {
+  const auto& g = params_.geometry;
+  const auto& m = params_.material;
+  std::ostringstream os;
+  os << "structure: plate " << g.height << " m x " << g.thickness << " m, " << g.cells_across << " x "
+     << g.cells_along << " Q9 (" << mesh_.elements.size() << " elements, " << dof_count() << " dofs), "
+     << to_string(m.model) << " E = " << m.youngs_modulus << " Pa, nu = " << m.poisson_ratio
+     << ", rho = " << m.density << " kg/m^3, " << to_string(m.hypothesis) << " per unit depth, "
+     << (m.selective_reduced_integration ? "selective reduced" : "full") << " integration, Newmark beta = "
+     << params_.newmark.beta << " gamma = " << params_.newmark.gamma << ", ranks = " << size_;
+  return os.str();
 }
 
 void PlateSolver::initialise_acceleration(double t) {

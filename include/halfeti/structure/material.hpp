@@ -70,6 +70,13 @@ class StVenantKirchhoff final : public Material {
 enum class MaterialModel { kNeoHookean, kStVenantKirchhoff };
 std::unique_ptr<Material> make_material(MaterialModel model, double youngs_modulus, double poisson_ratio);
 
+// Names as a scene writes them: "neo_hookean", "st_venant_kirchhoff"; "plane_strain", "plane_stress".
+// Unknown names are UserErrors listing the known ones.
+MaterialModel parse_material_model(const std::string& name);
+PlaneHypothesis parse_plane_hypothesis(const std::string& name);
+std::string to_string(MaterialModel model);
+std::string to_string(PlaneHypothesis hypothesis);
+
 // The in-plane response the element uses: S and D in Voigt [11, 22, 12] (engineering shear), energy, and the
 // out-of-plane state. Plane strain takes C33 = 1; plane stress solves S33(C33) = 0 by Newton and condenses the
 // tangent, D = D_pp - D_p3 D_3p / D_33 (exact linearisation of the constrained point).

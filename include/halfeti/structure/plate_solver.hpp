@@ -107,6 +107,9 @@ class PlateSolver {
 
   // ---- state ----
   void set_state(const Eigen::VectorXd& displacement, const Eigen::VectorXd& velocity);
+  // With the acceleration too (restart from a checkpoint without recomputing a0).
+  void set_state(const Eigen::VectorXd& displacement, const Eigen::VectorXd& velocity,
+                 const Eigen::VectorXd& acceleration);
   void initialise_acceleration(double t);  // solves M a0 = R(t) - F(u0)
   const Eigen::VectorXd& displacement() const { return u_; }
   const Eigen::VectorXd& velocity() const { return v_; }
@@ -146,6 +149,8 @@ class PlateSolver {
   double element_von_mises(int element) const;  // Pa, mean over the element's 3x3 points (Cauchy)
   double max_von_mises() const;                 // Pa, max over all points
   PhaseTimers& timers() { return timers_; }
+  // One line for the run log: mesh, dofs, material, hypothesis, integration, Newmark, ranks, per unit depth.
+  std::string summary() const;
   const StepReport& last_step() const { return last_; }
 
  private:

@@ -101,6 +101,14 @@ TEST(Material, PlaneStressThinsUnderUniaxialTension) {
   EXPECT_NEAR(r.s33, 0.0, 1e-4);
 }
 
+TEST(Material, NamesRoundTrip) {
+  for (auto m : {hs::MaterialModel::kNeoHookean, hs::MaterialModel::kStVenantKirchhoff})
+    EXPECT_EQ(hs::parse_material_model(hs::to_string(m)), m);
+  for (auto h : {hs::PlaneHypothesis::kPlaneStrain, hs::PlaneHypothesis::kPlaneStress})
+    EXPECT_EQ(hs::parse_plane_hypothesis(hs::to_string(h)), h);
+  EXPECT_THROW(hs::parse_material_model("mooney"), halfeti::UserError);
+}
+
 TEST(Material, RejectsBadConstants) {
   EXPECT_THROW(hs::NeoHookean(-1.0, 0.3), halfeti::UserError);
   EXPECT_THROW(hs::NeoHookean(1e6, 0.5), halfeti::UserError);
