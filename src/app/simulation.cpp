@@ -176,7 +176,8 @@ void Simulation::announce() {
 void Simulation::prepare_structure() {
   if (!parts_.plate || !parts_.structure_setup) return;
   if (parts_.structure_setup->start_static) {
-    const auto report = parts_.plate->solve_static(0.0, 10);
+    // The equilibrium of the tank at rest: every ground motion is zero before t = 0, so solve at t = -1 s.
+    const auto report = parts_.plate->solve_static(-1.0, 10);
     log_->line("structure: static equilibrium in " + std::to_string(report.newton_iterations) + " Newton iterations");
   }
   parts_.plate->initialise_acceleration(0.0);
