@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "halfeti/excitation/ground_motion.hpp"
 #include "halfeti/structure/plate_solver.hpp"
@@ -39,6 +40,22 @@ inline double first_frequency(const StructureParameters& p) {
   const double rho_a = p.material.density * p.geometry.thickness;
   return b * b * std::sqrt(bending_stiffness(p) / (rho_a * l * l * l * l)) / (2.0 * M_PI);
 }
+
+// A linear spring from one plate node to a fixed anchor: the simplest NodalElement.
+class AnchorSpring final : public NodalElement {
+ public:
+  AnchorSpring(int node, Eigen::Vector2d anchor, double stiffness) : node_(node), anchor_(anchor), k_(stiffness) {}
+  std::vector<int> nodes() const override { return {node_}; }
+  void evaluate(const std::vector<Eigen::Vector2d>& x, Eigen::VectorXd& f, Eigen::MatrixXd& k) override {
+    f = k_ * (x[0] - anchor_);
+    k = k_ * Eigen::Matrix2d::Identity();
+  }
+
+ private:
+  int node_;
+  Eigen::Vector2d anchor_;
+  double k_;
+};
 
 class ConstantGroundMotion final : public excitation::GroundMotion {
  public:

@@ -20,6 +20,10 @@ PlateRun run(MPI_Comm comm) {
   const auto p = hs::testing::paper_plate(2, 30);
   hs::testing::ConstantGroundMotion ground(3.0);
   hs::PlateSolver s(comm, p, &ground);
+  // A spring (a stand-in cable) from the top left corner to an anchor down and to the left.
+  const int corner = s.mesh().node("top_left");
+  hs::testing::AnchorSpring spring(corner, s.mesh().nodes[corner] + Eigen::Vector2d(-0.05, -0.05), 2.0);
+  s.add_nodal_element(&spring);
   const double l = p.geometry.height;
   const double load = 0.5 * hs::testing::bending_stiffness(p) / (l * l);
   s.add_edge_load("top", Eigen::Vector2d(load / p.geometry.thickness, 0.0));

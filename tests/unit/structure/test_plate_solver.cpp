@@ -11,21 +11,7 @@ using hs::testing::paper_plate;
 
 namespace {
 
-// A linear spring from one plate node to a fixed anchor: the simplest NodalElement.
-class AnchorSpring final : public halfeti::NodalElement {
- public:
-  AnchorSpring(int node, Eigen::Vector2d anchor, double stiffness) : node_(node), anchor_(anchor), k_(stiffness) {}
-  std::vector<int> nodes() const override { return {node_}; }
-  void evaluate(const std::vector<Eigen::Vector2d>& x, Eigen::VectorXd& f, Eigen::MatrixXd& k) override {
-    f = k_ * (x[0] - anchor_);
-    k = k_ * Eigen::Matrix2d::Identity();
-  }
-
- private:
-  int node_;
-  Eigen::Vector2d anchor_;
-  double k_;
-};
+using hs::testing::AnchorSpring;
 
 double static_tip(hs::PlateSolver& s, double load) {
   s.clear_loads();
