@@ -4,13 +4,17 @@
 //   K_eff du = r,   K_eff = K_solid + K_nodal + c0 M,   r = R - F - M a,
 // with R the external loads at t + dt, F the internal forces (solid elements and NodalElements such as cables),
 // a the Newmark acceleration of the current iterate and c0 = 1 / (beta dt^2). The clamped base rows are identity
-// with a zero right-hand side. The coupling adds its contact rows and columns to this system: it either adds to
-// the owned matrix through add_newton_system() into a larger matrix of its own, then hands the displacement part
-// of the solution back to apply_increment().
+// with a zero right-hand side. The coupling adds its contact rows and columns (eq. 21) by having
+// add_newton_system() write K_eff and r into a larger matrix of its own at an offset, solving that, and handing
+// the displacement part of the solution back to apply_increment():
 //
 //   solver.begin_step(t, dt);
-//   do { solver.assemble_newton_system(); ... add contact ...; solve; solver.apply_increment(du); }
-//   while (!solver.converged());
+//   for (;;) {
+//     assemble (solver.assemble_newton_system(), or add_newton_system(A, b, offset) + contact rows);
+//     if (solver.converged()) break;          // residual test
+//     solve; solver.apply_increment(du);
+//     if (solver.converged()) break;          // increment test
+//   }
 //   solver.end_step();
 //
 // step(t, dt) is exactly that loop with the plate alone.
