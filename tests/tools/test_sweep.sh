@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# jobscripts/sweep in local mode on a tiny scene: a 2 x 2 grid gives four runs and one CSV row each, with the
+# varied values and the probe maxima the runs wrote; --zip pairs values; a bad --vary is refused.
+set -euo pipefail
+root=$1
+work=$2/sweep_test
+rm -rf "$work" && mkdir -p "$work"
+cat > "$work/tiny.yaml" <<'YAML'
+scene: {name: tiny, end_time: 0.2}
+output: {probe_interval: 0.01}
+excitation: {kind: sine_pulse, amplitude: 1.0, period: 0.2}
+probes:
+  - {name: ag, kind: ground_acceleration}
+YAML
+"$root/jobscripts/sweep" "$work/tiny.yaml" --vary excitation.amplitude=1,2 --vary excitation.period=0.1,0.2 \
+  --out "$work/grid" --probe ag >/dev/null
+rows=$(tail -n +2 "$work/grid/sweep.csv" | wc -l)
+[ "$rows" -eq 4 ] || { echo "expected 4 rows, found $rows"; exit 1; }
+# amplitude 2, period 0.2: the sampled peak of the sine is exactly 2 (t = 0.05 is a probe time).
+grep -q "^excitation.amplitude=2_excitation.period=0.2,2,0.2,ok,.*,2.0$" "$work/grid/sweep.csv" \
+  || { echo "row for amplitude 2, period 0.2 missing or wrong:"; cat "$work/grid/sweep.csv"; exit 1; }
+"$root/jobscripts/sweep" "$work/tiny.yaml" --zip --vary excitation.amplitude=1,3 --vary excitation.period=0.2,0.2 \
+  --out "$work/zip" >/dev/null
+[ "$(tail -n +2 "$work/zip/sweep.csv" | wc -l)" -eq 2 ] || { echo "--zip: expected 2 rows"; exit 1; }
+if "$root/jobscripts/sweep" "$work/tiny.yaml" --vary excitation.amplitude --out "$work/bad" 2>/dev/null; then
+  echo "a malformed --vary was accepted"; exit 1
+fi
+"$root/jobscripts/sweep" "$work/tiny.yaml" --vary excitation.amplitude=1,2 --slurm --ranks 2 --out "$work/slurm" >/dev/null
+grep -q "#SBATCH --array=1-2" "$work/slurm/sweep.sbatch" || { echo "no array line"; exit 1; }
+[ "$(wc -l < "$work/slurm/runs.txt")" -eq 2 ] || { echo "runs.txt should hold 2 commands"; exit 1; }
+echo "sweep: ok"
