@@ -94,9 +94,14 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
     InvaderCorrection& out = corrections[k];
     out.dx = y.x() - gathered[k].x;
     out.dy = y.y() - gathered[k].y;
-    // Delta C = C / m held over the step (eq. 4): the velocity changes by C dt / m.
-    out.dvx = f.x() * dt / gathered[k].mass;
-    out.dvy = f.y() * dt / gathered[k].mass;
+    if (params_.velocity_update == VelocityUpdate::kAcceleration) {
+      // Delta C = C / m held over the step (eq. 4): the velocity changes by C dt / m.
+      out.dvx = f.x() * dt / gathered[k].mass;
+      out.dvy = f.y() * dt / gathered[k].mass;
+    } else {
+      out.dvx = out.dx / dt;
+      out.dvy = out.dy / dt;
+    }
     out.fx = f.x();
     out.fy = f.y();
   }

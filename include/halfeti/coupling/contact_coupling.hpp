@@ -27,8 +27,15 @@
 
 namespace halfeti::coupling {
 
+// How the contact changes an invader's velocity (docs/coupling.md):
+//   kAcceleration: dv = C dt / m, the constant acceleration Delta C = C / m of eq. 4 held over the step, the
+//                  Newmark (beta 1/2, gamma 1) partner of the 2 / dt^2 mass participation: dv = 2 dx / dt;
+//   kDisplacement: dv = dx / dt, the velocity the fluid's own drift x += dt v would need for the same dx.
+enum class VelocityUpdate { kAcceleration, kDisplacement };
+
 struct CouplingParameters {
   ContactConstraint constraint = ContactConstraint::kTied;  // scene: coupling.constraint: tied | normal
+  VelocityUpdate velocity_update = VelocityUpdate::kAcceleration;  // scene: coupling.velocity_update
   SsosdParameters ssosd;                                    // scene: coupling.ssosd.{enabled,layer_ratio,velocity_floor}
   double inside_tolerance = 1e-9;  // m, > 0: an invader ending deeper than this past the surface is an error
   std::string options_prefix = "structure_contact_";  // PETSc options prefix of the contact KSP

@@ -8,7 +8,8 @@ namespace halfeti::coupling {
 struct SsosdParameters {
   bool enabled = true;          // false: invaders are particles past the surface, pushed exactly onto it
   double layer_ratio = 10.0;    // L / (u_max dt), eq. 23 read dimensionless: [5, 50]
-  double velocity_floor = 0.1;  // m/s, > 0: u_max used in eq. 23 is at least this (still water keeps a layer)
+  double velocity_floor = 0.5;  // m/s, > 0: u_max in eq. 23 is at least this (still water keeps a layer; near the
+                                // expected peak speed it keeps L steady: docs/coupling.md)
 };
 
 void validate(const SsosdParameters& p);  // UserError naming coupling.ssosd.<key> and its range
