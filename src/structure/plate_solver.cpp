@@ -235,7 +235,7 @@ double PlateSolver::sum_over_ranks(double local) const {
 
 bool PlateSolver::converged() const {
   const auto& nt = params_.newton;
-  const bool residual_small = residual_norm_ <= std::max(nt.residual_atol, nt.residual_rtol * first_residual_norm_);
+  const bool residual_small = residual_norm_ <= std::max(nt.residual_atol, nt.residual_rtol * force_scale_);
   const bool increment_small = increment_norm_ >= 0.0 && increment_norm_ <= nt.increment_rtol * params_.geometry.height;
   return residual_small || increment_small;
 }
@@ -290,7 +290,7 @@ StepReport PlateSolver::solve_static(double t, int load_increments) {
 
 double PlateSolver::strain_energy() const {
   double e = 0.0;
-  for (int k : partition_.owned_elements) e += integrator_->energy(geometry_[k], current(k));
+  for (int k : partition_.owned_elements) e += integrator_->energy(geometry_[k], element_displacement(k));
   return sum_over_ranks(e);
 }
 
@@ -308,14 +308,14 @@ double PlateSolver::kinetic_energy() const {
 double PlateSolver::element_von_mises(int element) const {
   HALFETI_CHECK(element >= 0 && element < static_cast<int>(mesh_.elements.size()), "no element " << element);
   double sum = 0.0;
-  for (const auto& s : integrator_->cauchy_at_points(geometry_[element], current(element))) sum += von_mises(s);
+  for (const auto& s : integrator_->cauchy_at_points(geometry_[element], element_displacement(element))) sum += von_mises(s);
   return sum / 9.0;
 }
 
 double PlateSolver::max_von_mises() const {
   double m = 0.0;
   for (int k : partition_.owned_elements)
-    for (const auto& s : integrator_->cauchy_at_points(geometry_[k], current(k))) m = std::max(m, von_mises(s));
+    for (const auto& s : integrator_->cauchy_at_points(geometry_[k], element_displacement(k))) m = std::max(m, von_mises(s));
   double global = m;
   if (size_ > 1) MPI_Allreduce(&m, &global, 1, MPI_DOUBLE, MPI_MAX, comm_.get());
   return global;

@@ -13,6 +13,11 @@ constexpr double kGauss3[3] = {-0.7745966692414834, 0.0, 0.7745966692414834};
 constexpr double kWeight3[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
 constexpr double kGauss2[2] = {-0.5773502691896257, 0.5773502691896257};
 
+// F = I + sum_a u_a (x) dN_a/dX (displacement gradient: no round-off from the size of the coordinates).
+Eigen::Matrix2d deformation_gradient(const Q9Coordinates& u, const Eigen::Matrix<double, kQ9Nodes, 2>& g) {
+  return Eigen::Matrix2d::Identity() + u.transpose() * g;
+}
+
 Q9Point reference_point(const Q9Coordinates& reference, double xi, double eta, double weight) {
   Q9Point p;
   Eigen::Matrix<double, kQ9Nodes, 2> dn_dxi;
@@ -63,10 +68,10 @@ bool HyperelasticQ9::split() const {
 }
 
 template <bool kTangent>
-void HyperelasticQ9::accumulate(const Q9Point& p, const Q9Coordinates& x, EnergyPart part, Q9Vector& force,
+void HyperelasticQ9::accumulate(const Q9Point& p, const Q9Coordinates& u, EnergyPart part, Q9Vector& force,
                                 Q9Matrix* tangent) const {
   const auto& g = p.gradient;
-  const Eigen::Matrix2d f = x.transpose() * g;  // F(i, I) = sum_a x_ai dN_a/dX_I
+  const Eigen::Matrix2d f = deformation_gradient(u, g);
   if (!(f.determinant() > 0.0))
     HALFETI_NUMERICAL_ERROR("structure: inverted element point (det F = " << f.determinant()
                                                                            << " <= 0): deformation too large");
@@ -117,10 +122,10 @@ void mirror_and_interleave(const Q9Matrix& component_major, Q9Matrix& k) {
 }
 }  // namespace
 
-double HyperelasticQ9::energy(const Q9Geometry& g, const Q9Coordinates& x) const {
+double HyperelasticQ9::energy(const Q9Geometry& g, const Q9Coordinates& u) const {
   double e = 0.0;
   auto add = [&](const Q9Point& p, EnergyPart part) {
-    const Eigen::Matrix2d f = x.transpose() * p.gradient;
+    const Eigen::Matrix2d f = deformation_gradient(u, p.gradient);
     e += p.weight * plane_response(material_, f.transpose() * f, options_.hypothesis, part).energy;
   };
   if (split()) {
@@ -132,25 +137,25 @@ double HyperelasticQ9::energy(const Q9Geometry& g, const Q9Coordinates& x) const
   return e;
 }
 
-void HyperelasticQ9::internal_force(const Q9Geometry& g, const Q9Coordinates& x, Q9Vector& force) const {
+void HyperelasticQ9::internal_force(const Q9Geometry& g, const Q9Coordinates& u, Q9Vector& force) const {
   force.setZero();
   if (split()) {
-    for (const auto& p : g.full) accumulate<false>(p, x, EnergyPart::kShear, force, nullptr);
-    for (const auto& p : g.reduced) accumulate<false>(p, x, EnergyPart::kBulk, force, nullptr);
+    for (const auto& p : g.full) accumulate<false>(p, u, EnergyPart::kShear, force, nullptr);
+    for (const auto& p : g.reduced) accumulate<false>(p, u, EnergyPart::kBulk, force, nullptr);
   } else {
-    for (const auto& p : g.full) accumulate<false>(p, x, EnergyPart::kAll, force, nullptr);
+    for (const auto& p : g.full) accumulate<false>(p, u, EnergyPart::kAll, force, nullptr);
   }
 }
 
-void HyperelasticQ9::internal_force_and_tangent(const Q9Geometry& g, const Q9Coordinates& x, Q9Vector& force,
+void HyperelasticQ9::internal_force_and_tangent(const Q9Geometry& g, const Q9Coordinates& u, Q9Vector& force,
                                                 Q9Matrix& tangent) const {
   force.setZero();
   Q9Matrix component_major = Q9Matrix::Zero();
   if (split()) {
-    for (const auto& p : g.full) accumulate<true>(p, x, EnergyPart::kShear, force, &component_major);
-    for (const auto& p : g.reduced) accumulate<true>(p, x, EnergyPart::kBulk, force, &component_major);
+    for (const auto& p : g.full) accumulate<true>(p, u, EnergyPart::kShear, force, &component_major);
+    for (const auto& p : g.reduced) accumulate<true>(p, u, EnergyPart::kBulk, force, &component_major);
   } else {
-    for (const auto& p : g.full) accumulate<true>(p, x, EnergyPart::kAll, force, &component_major);
+    for (const auto& p : g.full) accumulate<true>(p, u, EnergyPart::kAll, force, &component_major);
   }
   mirror_and_interleave(component_major, tangent);
 }
@@ -161,10 +166,10 @@ Eigen::Matrix<double, kQ9Nodes, kQ9Nodes> HyperelasticQ9::scalar_mass(const Q9Ge
   return m;
 }
 
-std::array<Eigen::Vector4d, 9> HyperelasticQ9::cauchy_at_points(const Q9Geometry& g, const Q9Coordinates& x) const {
+std::array<Eigen::Vector4d, 9> HyperelasticQ9::cauchy_at_points(const Q9Geometry& g, const Q9Coordinates& u) const {
   std::array<Eigen::Vector4d, 9> out;
   for (int q = 0; q < 9; ++q) {
-    const Eigen::Matrix2d f = x.transpose() * g.full[q].gradient;
+    const Eigen::Matrix2d f = deformation_gradient(u, g.full[q].gradient);
     const PlaneResponse r = plane_response(material_, f.transpose() * f, options_.hypothesis);
     const Eigen::Vector4d s(r.stress(0), r.stress(1), r.stress(2), r.s33);
     out[q] = cauchy_stress(f, std::sqrt(r.c33), s);

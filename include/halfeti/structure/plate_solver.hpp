@@ -61,7 +61,7 @@ struct NewmarkParameters {
 
 struct NewtonParameters {
   int max_iterations = 25;        // >= 1
-  double residual_rtol = 1e-8;    // ||r|| / ||r_first|| of the step, (0, 1)
+  double residual_rtol = 1e-8;    // ||r|| / max(||r_first||, ||R||, ||F + M a||) of the iteration, (0, 1)
   double residual_atol = 1e-12;   // N/m, >= 0
   double increment_rtol = 1e-10;  // ||du||_inf / plate height, > 0
 };
@@ -167,7 +167,7 @@ class PlateSolver {
   void compute_newton_terms(ElementSink&& element_sink, NodalSink&& nodal_sink);
   void compute_external(double t);
   void assemble_local(Mode mode);  // residual_ and element matrices into matrix_ via add_newton_system
-  Q9Coordinates current(int e) const;
+  Q9Coordinates element_displacement(int e) const;
   void update_acceleration();
   Eigen::VectorXd gather_in_node_order(Vec v);  // a distributed Vec of the owned layout, on every rank
   double sum_over_ranks(double local) const;
@@ -191,7 +191,7 @@ class PlateSolver {
   Mode mode_ = Mode::kStatic;
   double time_ = 0.0;  // of the state being solved for (t + dt in a step), for error messages
   double dt_ = 0.0, load_factor_ = 1.0, ramp_ = 1.0;
-  double residual_norm_ = 0.0, first_residual_norm_ = -1.0, increment_norm_ = -1.0;
+  double residual_norm_ = 0.0, first_residual_norm_ = -1.0, increment_norm_ = -1.0, force_scale_ = 0.0;
   StepReport last_;
 
   OwnedMat matrix_;

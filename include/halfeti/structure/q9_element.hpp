@@ -9,6 +9,10 @@
 // the tangent stays the exact derivative of the residual (Newton converges quadratically).
 //
 // Local node numbering is tensor order: node a = i + 3 j at (xi_i, eta_j), xi_i in {-1, 0, 1}.
+//
+// The integrator takes nodal *displacements* u, not positions: F = I + sum_a u_a (x) dN_a/dX. Built from
+// positions (x ~ 0.1 m against strains of 1e-6), F would carry round-off of ~1e-14 that puts a floor of ~1e-8 N/m
+// under the residual and costs a Newton iteration per step.
 #pragma once
 
 #include <Eigen/Dense>
@@ -22,7 +26,7 @@ namespace halfeti::structure {
 
 constexpr int kQ9Nodes = 9;
 constexpr int kQ9Dofs = 18;
-using Q9Coordinates = Eigen::Matrix<double, kQ9Nodes, 2>;  // row a = (x, y) of node a
+using Q9Coordinates = Eigen::Matrix<double, kQ9Nodes, 2>;  // row a = (x, y) (or displacement) of node a
 using Q9Vector = Eigen::Matrix<double, kQ9Dofs, 1>;        // x0 y0 x1 y1 ...
 using Q9Matrix = Eigen::Matrix<double, kQ9Dofs, kQ9Dofs>;
 
@@ -52,24 +56,24 @@ class HyperelasticQ9 {
   // Throws UserError if the reference element is inverted or degenerate.
   static Q9Geometry reference_geometry(const Q9Coordinates& reference);
 
-  // Strain energy of the element at current positions x [J per m depth].
-  double energy(const Q9Geometry& g, const Q9Coordinates& x) const;
-  // Internal force f_int = dEnergy/dx.
-  void internal_force(const Q9Geometry& g, const Q9Coordinates& x, Q9Vector& force) const;
-  // f_int and its tangent K = df_int/dx (material + geometric stiffness).
-  void internal_force_and_tangent(const Q9Geometry& g, const Q9Coordinates& x, Q9Vector& force,
+  // Strain energy of the element at nodal displacements u [J per m depth].
+  double energy(const Q9Geometry& g, const Q9Coordinates& u) const;
+  // Internal force f_int = dEnergy/du.
+  void internal_force(const Q9Geometry& g, const Q9Coordinates& u, Q9Vector& force) const;
+  // f_int and its tangent K = df_int/du (material + geometric stiffness).
+  void internal_force_and_tangent(const Q9Geometry& g, const Q9Coordinates& u, Q9Vector& force,
                                   Q9Matrix& tangent) const;
   // Consistent mass as a 9x9 scalar matrix (the same for x and y): M_ab = rho int N_a N_b dA.
   static Eigen::Matrix<double, kQ9Nodes, kQ9Nodes> scalar_mass(const Q9Geometry& g, double density);
   // Cauchy stress (Voigt [11, 22, 12, 33]) at each 3x3 point, for probes.
-  std::array<Eigen::Vector4d, 9> cauchy_at_points(const Q9Geometry& g, const Q9Coordinates& x) const;
+  std::array<Eigen::Vector4d, 9> cauchy_at_points(const Q9Geometry& g, const Q9Coordinates& u) const;
 
   const Q9Options& options() const { return options_; }
 
  private:
   bool split() const;
   template <bool kTangent>
-  void accumulate(const Q9Point& p, const Q9Coordinates& x, EnergyPart part, Q9Vector& force,
+  void accumulate(const Q9Point& p, const Q9Coordinates& u, EnergyPart part, Q9Vector& force,
                   Q9Matrix* tangent) const;
 
   const Material& material_;
