@@ -13,7 +13,7 @@ void density_gradient(const ParticleView& pv, const PairList& pairs, std::vector
     double b00 = 0, b01 = 0, b10 = 0, b11 = 0, sx = 0, sy = 0;
     const double rhoi = pv.rho[i];
     for_each_neighbour(pairs, i, [&](int j, int k) {
-      const double vj = pv.mass[j] / pv.rho[j];
+      const double vj = pv.volume[j];
       const double gx = -pairs.f[k] * pairs.ex[k], gy = -pairs.f[k] * pairs.ey[k];  // grad_i W_ij
       b00 += vj * gx * pairs.ex[k];
       b01 += vj * gx * pairs.ey[k];

@@ -117,9 +117,9 @@ void Fluid::sort_owned_by_cell() {
   for (int i = 0; i < n_owned_; ++i) cell_[i] = grid_.cell_of(x_[i], y_[i]);
   std::vector<int> perm(n_owned_);
   std::iota(perm.begin(), perm.end(), 0);
-  std::sort(perm.begin(), perm.end(), [&](int a, int b) {
-    return cell_[a] != cell_[b] ? cell_[a] < cell_[b] : gid_[a] < gid_[b];
-  });
+  const auto before = [&](int a, int b) { return cell_[a] != cell_[b] ? cell_[a] < cell_[b] : gid_[a] < gid_[b]; };
+  if (std::is_sorted(perm.begin(), perm.end(), before)) return;  // most steps: nobody changed cell
+  std::sort(perm.begin(), perm.end(), before);
   permute(gid_, perm);
   permute(x_, perm);
   permute(y_, perm);
@@ -155,7 +155,11 @@ void Fluid::compute_forces() {
     ScopedTimer t(timers_, "halo");
     exchange_halo();
     p_.resize(n_local_);
-    for (int i = 0; i < n_local_; ++i) p_[i] = pressure_from_density(rho_[i], params_.density, c0_);  // eq. 9
+    volume_.resize(n_local_);
+    for (int i = 0; i < n_local_; ++i) {
+      p_[i] = pressure_from_density(rho_[i], params_.density, c0_);  // eq. 9
+      volume_[i] = mass_[i] / rho_[i];
+    }
   }
   {
     ScopedTimer t(timers_, "neighbours");
@@ -164,7 +168,7 @@ void Fluid::compute_forces() {
     search_.fixed_pairs(1, x_.data(), y_.data(), n_owned_, ghost_pairs_);
   }
   const ParticleView pv{x_.data(), y_.data(), vx_.data(), vy_.data(), rho_.data(), mass_.data(), p_.data(),
-                        n_owned_};
+                        volume_.data(), n_owned_, n_local_};
   const bool use_delta = params_.scheme == Scheme::kDeltaSph && params_.delta > 0.0;
   {
     ScopedTimer t(timers_, "density_gradient");
@@ -236,7 +240,7 @@ void Fluid::advance() {
   {
     ScopedTimer t(timers_, "forces");
     const ParticleView pv{x_.data(), y_.data(), vx_.data(), vy_.data(), rho_.data(), mass_.data(), p_.data(),
-                          n_owned_};
+                          volume_.data(), n_owned_, n_local_};
     continuity_rates(pv, pairs_, ghost_pairs_, ghosts_, grad_rho_, constants_, rates_);
   }
   {

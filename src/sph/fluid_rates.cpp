@@ -20,31 +20,41 @@ void momentum_rates(const ParticleView& pv, const PairList& pairs, const PairLis
   out.ax.assign(n, 0.0);
   out.ay.assign(n, 0.0);
   double max_mu = 0.0, max_a2 = 0.0;
+  // Monaghan (2000) coefficients of every local particle, once (ghosts included).
+  std::vector<double> tensile(k.tensile ? pv.n_local : 0);
+  for (std::size_t j = 0; j < tensile.size(); ++j)
+    tensile[j] = tensile_coefficient(pv.p[j], pv.rho[j], k.eps_neg, k.eps_pos);
+  const double inv_w_dx = 1.0 / k.w_dx;
   const double eta2 = 0.01 * k.h * k.h;
   const double viscosity = k.alpha * k.h * k.c0 * k.rho0;     // eq. 4
 
   for (int i = 0; i < n; ++i) {
     const double rhoi = pv.rho[i], pi = pv.p[i], ui = pv.vx[i], vi = pv.vy[i];
-    const double ri_t = k.tensile ? tensile_coefficient(pi, rhoi, k.eps_neg, k.eps_pos) : 0.0;
+    const double ri_t = k.tensile ? tensile[i] : 0.0, inv_rhoi = 1.0 / rhoi;
     double ax = 0, ay = 0;
+    double mu_i = 0.0;
     for_each_neighbour(pairs, i, [&](int j, int q) {
-      const double ex = pairs.ex[q], ey = pairs.ey[q], r = pairs.r[q];
-      const double gx = -pairs.f[q] * ex, gy = -pairs.f[q] * ey;  // grad_i W_ij
-      const double vj = pv.mass[j] / pv.rho[j];
+      const double ex = pairs.ex[q], ey = pairs.ey[q], r2 = ex * ex + ey * ey;
+      const double vj = pv.volume[j];
       const double du = pv.vx[j] - ui, dv = pv.vy[j] - vi;
       // eq. 4 pressure term in the symmetric volume form -(1/rho_i) sum (p_i + p_j) V_j grad_i W_ij
-      double scalar = -(pi + pv.p[j]) * vj / rhoi;
+      // (the 1/rho_i is applied after the sum)
+      double scalar = -(pi + pv.p[j]) * vj;
       // eq. 8: pi_ij = (u_j - u_i).(r_j - r_i) / (|r_ji|^2 + eta^2); eq. 4: + alpha h c0 rho0 / rho_i sum pi_ij V_j grad W
-      const double u_dot_r = du * ex + dv * ey;
-      scalar += viscosity * (u_dot_r / (r * r + eta2)) * vj / rhoi;
-      if (k.tensile) {  // Monaghan (2000): - m_j (R_i + R_j) (W_ij / W(dx))^4 grad_i W_ij
-        const double fij = pairs.w[q] / k.w_dx, f2 = fij * fij;
-        scalar -= pv.mass[j] * (ri_t + tensile_coefficient(pv.p[j], pv.rho[j], k.eps_neg, k.eps_pos)) * f2 * f2;
+      const double u_dot_r = du * ex + dv * ey, mu = u_dot_r / (r2 + eta2);
+      scalar += viscosity * mu * vj;
+      if (k.tensile) {  // Monaghan (2000): - m_j (R_i + R_j) (W_ij / W(dx))^4 grad_i W_ij (times rho_i / rho_i)
+        const double fij = pairs.w[q] * inv_w_dx, f2 = fij * fij;
+        scalar -= rhoi * pv.mass[j] * (ri_t + tensile[j]) * f2 * f2;
       }
-      ax += scalar * gx;
-      ay += scalar * gy;
-      max_mu = std::max(max_mu, std::abs(k.h * u_dot_r / (r * r + eta2)));
+      // grad_i W_ij = -F r_ji
+      ax -= scalar * pairs.f[q] * ex;
+      ay -= scalar * pairs.f[q] * ey;
+      mu_i = std::max(mu_i, std::abs(mu));
     });
+    ax *= inv_rhoi;
+    ay *= inv_rhoi;
+    max_mu = std::max(max_mu, k.h * mu_i);
 
     // Wall pressure: the eq. 4 pressure term over the ghost points behind the tank walls, their pressure continued
     // hydrostatically from particle i (Adami et al. 2012); a wall pushes, it never pulls (sum clamped at 0).
@@ -55,8 +65,8 @@ void momentum_rates(const ParticleView& pv, const PairList& pairs, const PairLis
         // eq. 8 with the mirrored velocity: only the wall-normal motion is damped (free slip)
         const double un = ui * ghosts.nx[g] + vi * ghosts.ny[g];
         const double e_n = ghosts.nx[g] * ghost_pairs.ex[q] + ghosts.ny[g] * ghost_pairs.ey[q];
-        const double r = ghost_pairs.r[q];
-        s += viscosity * (-2.0 * un * e_n / (r * r + eta2)) * ghosts.volume[g] / rhoi * -ghost_pairs.f[q];
+        const double r2 = ghost_pairs.ex[q] * ghost_pairs.ex[q] + ghost_pairs.ey[q] * ghost_pairs.ey[q];
+        s += viscosity * (-2.0 * un * e_n / (r2 + eta2)) * ghosts.volume[g] / rhoi * -ghost_pairs.f[q];
         ax += s * ghost_pairs.ex[q];
         ay += s * ghost_pairs.ey[q];
       });
@@ -98,25 +108,25 @@ void continuity_rates(const ParticleView& pv, const PairList& pairs, const PairL
   for (int i = 0; i < n; ++i) {
     const double rhoi = pv.rho[i], ui = pv.vx[i], vi = pv.vy[i];
     const double gri_x = use_delta ? grad_rho[2 * i] : 0.0, gri_y = use_delta ? grad_rho[2 * i + 1] : 0.0;
-    double drho = 0, xs = 0, ys = 0;
+    double div = 0, diff = 0, xs = 0, ys = 0;
     for_each_neighbour(pairs, i, [&](int j, int q) {
-      const double ex = pairs.ex[q], ey = pairs.ey[q], r = pairs.r[q];
-      const double gx = -pairs.f[q] * ex, gy = -pairs.f[q] * ey;  // grad_i W_ij
-      const double vj = pv.mass[j] / pv.rho[j];
+      const double ex = pairs.ex[q], ey = pairs.ey[q], f = pairs.f[q];
+      const double vj = pv.volume[j];
       const double du = pv.vx[j] - ui, dv = pv.vy[j] - vi;
-      // eq. 3, first term, in Marrone et al.'s (2011) form -rho_i sum V_j (u_j - u_i).grad_i W_ij
-      drho -= rhoi * vj * (du * gx + dv * gy);
+      // eq. 3, first term, in Marrone et al.'s (2011) form -rho_i sum V_j (u_j - u_i).grad_i W_ij, grad_i W = -F r_ji
+      div -= vj * f * (du * ex + dv * ey);
       if (use_delta) {
         // eqs. 3, 5: delta h c0 sum V_j psi_ij.grad_i W_ij, psi_ij = 2 (rho_j - rho_i) r_ji / r^2 - (grad^L_i + grad^L_j)
-        const double s = 2.0 * (pv.rho[j] - rhoi) / (r * r);
+        const double s = 2.0 * (pv.rho[j] - rhoi) / (ex * ex + ey * ey);
         const double psx = s * ex - (gri_x + grad_rho[2 * j]), psy = s * ey - (gri_y + grad_rho[2 * j + 1]);
-        drho += diffusion * vj * (psx * gx + psy * gy);
+        diff -= vj * f * (psx * ex + psy * ey);
       }
       // eq. 11 (XSPH), written towards the neighbours' mean velocity: eps sum m_j (u_j - u_i) / rho_bar_ij W_ij
       const double wm = pv.mass[j] * pairs.w[q] / (0.5 * (rhoi + pv.rho[j]));
       xs += wm * du;
       ys += wm * dv;
     });
+    double drho = -rhoi * div + diffusion * diff;
     // Wall ghosts move as the mirror image of particle i (free slip): u_g - u_i = -2 (u_i . n) n.
     if (k.wall_pressure)
       for_each_neighbour(ghost_pairs, i, [&](int g, int q) {

@@ -21,9 +21,12 @@ void bin(const parallel::CellGrid& g, const double* x, const double* y, int n, K
   items.resize(n);
   std::vector<int> fill(start.begin(), start.end() - 1);
   for (int i = 0; i < n; ++i) items[fill[cell_of[i]]++] = i;
+  // Usually already in key order (owned particles are kept sorted by cell and id, and a cell's ghosts all come
+  // from its one owner in that order), so the sort rarely runs.
   for (int c = 0; c < nc; ++c) {
     auto b = items.begin() + start[c], e = items.begin() + start[c + 1];
-    if (e - b > 1) std::sort(b, e, [&](int a, int bb) { return key(a) < key(bb); });
+    const auto less = [&](int a, int bb) { return key(a) < key(bb); };
+    if (e - b > 1 && !std::is_sorted(b, e, less)) std::sort(b, e, less);
   }
 }
 
@@ -46,6 +49,12 @@ void NeighbourSearch::set_fixed_points(int set, const std::vector<double>& px, c
   std::vector<int> cells;
   bin(grid_, b.x.data(), b.y.data(), static_cast<int>(b.x.size()), [](int i) { return i; }, b.start, b.items,
       cells);
+  b.near.assign(grid_.cell_count(), 0);
+  for (int c : cells) {
+    const int cx = c % grid_.nx, cy = c / grid_.nx;
+    for (int jy = std::max(cy - 1, 0); jy <= std::min(cy + 1, grid_.ny - 1); ++jy)
+      for (int jx = std::max(cx - 1, 0); jx <= std::min(cx + 1, grid_.nx - 1); ++jx) b.near[jy * grid_.nx + jx] = 1;
+  }
 }
 
 bool NeighbourSearch::crosses_barrier(double xi, double yi, double xj, double yj) const {
@@ -57,28 +66,36 @@ bool NeighbourSearch::crosses_barrier(double xi, double yi, double xj, double yj
 void NeighbourSearch::fluid_pairs(const double* x, const double* y, const std::int64_t* gid, int n_owned,
                                   int n_local, PairList& out) {
   bin(grid_, x, y, n_local, [gid](int i) { return gid[i]; }, cell_start_, cell_items_, cell_of_);
+  // Positions in binned order, so that the three cells of a row are one contiguous range.
+  bx_.resize(n_local);
+  by_.resize(n_local);
+  for (int k = 0; k < n_local; ++k) {
+    bx_[k] = x[cell_items_[k]];
+    by_[k] = y[cell_items_[k]];
+  }
   out.clear();
   out.start.assign(n_owned + 1, 0);
+  out.reserve(static_cast<std::size_t>(n_owned) * 24);
   const double rc2 = kernel_.support() * kernel_.support();
   const bool barriers = !barriers_.empty();
   double min_r2 = std::numeric_limits<double>::infinity();
   for (int i = 0; i < n_owned; ++i) {
     const int c = cell_of_[i], cx = c % grid_.nx, cy = c / grid_.nx;
     const double xi = x[i], yi = y[i];
-    // Global cell order (dy outer, dx inner gives ascending cell index), then global id inside the cell.
-    for (int jy = std::max(cy - 1, 0); jy <= std::min(cy + 1, grid_.ny - 1); ++jy)
-      for (int jx = std::max(cx - 1, 0); jx <= std::min(cx + 1, grid_.nx - 1); ++jx) {
-        const int cc = jy * grid_.nx + jx;
-        for (int k = cell_start_[cc]; k < cell_start_[cc + 1]; ++k) {
-          const int j = cell_items_[k];
-          if (j == i) continue;
-          const double dx = x[j] - xi, dy = y[j] - yi, r2 = dx * dx + dy * dy;
-          if (r2 >= rc2) continue;
-          if (barriers && crosses_barrier(xi, yi, x[j], y[j])) continue;
-          min_r2 = std::min(min_r2, r2);
-          out.push(j, dx, dy, std::sqrt(r2), kernel_);
-        }
+    const int x_lo = std::max(cx - 1, 0), x_hi = std::min(cx + 1, grid_.nx - 1);
+    // Global cell order (rows ascending, and within a row the cells ascending), then global id inside a cell.
+    for (int jy = std::max(cy - 1, 0); jy <= std::min(cy + 1, grid_.ny - 1); ++jy) {
+      const int k_end = cell_start_[jy * grid_.nx + x_hi + 1];
+      for (int k = cell_start_[jy * grid_.nx + x_lo]; k < k_end; ++k) {
+        const double dx = bx_[k] - xi, dy = by_[k] - yi, r2 = dx * dx + dy * dy;
+        if (r2 >= rc2) continue;
+        const int j = cell_items_[k];
+        if (j == i) continue;
+        if (barriers && crosses_barrier(xi, yi, x[j], y[j])) continue;
+        min_r2 = std::min(min_r2, r2);
+        out.push(j, dx, dy, std::sqrt(r2), eval_);
       }
+    }
     out.start[i + 1] = static_cast<int>(out.size());
   }
   min_distance_ = std::sqrt(min_r2);
@@ -91,6 +108,10 @@ void NeighbourSearch::fixed_pairs(int set, const double* x, const double* y, int
   const double rc2 = kernel_.support() * kernel_.support();
   for (int i = 0; i < n_owned; ++i) {
     const int cx = grid_.ix(x[i]), cy = grid_.iy(y[i]);
+    if (!b.near[cy * grid_.nx + cx]) {
+      out.start[i + 1] = static_cast<int>(out.size());
+      continue;
+    }
     for (int jy = std::max(cy - 1, 0); jy <= std::min(cy + 1, grid_.ny - 1); ++jy)
       for (int jx = std::max(cx - 1, 0); jx <= std::min(cx + 1, grid_.nx - 1); ++jx) {
         const int cc = jy * grid_.nx + jx;
@@ -99,7 +120,7 @@ void NeighbourSearch::fixed_pairs(int set, const double* x, const double* y, int
           const double dx = b.x[j] - x[i], dy = b.y[j] - y[i], r2 = dx * dx + dy * dy;
           if (r2 >= rc2 || r2 == 0.0) continue;
           if (!barriers_.empty() && set == 1 && crosses_barrier(x[i], y[i], b.x[j], b.y[j])) continue;
-          out.push(j, dx, dy, std::sqrt(r2), kernel_);
+          out.push(j, dx, dy, std::sqrt(r2), eval_);
         }
       }
     out.start[i + 1] = static_cast<int>(out.size());

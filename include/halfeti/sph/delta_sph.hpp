@@ -15,7 +15,8 @@ namespace halfeti::sph {
 // Read-only view of the local particles (owned first, then ghosts).
 struct ParticleView {
   const double *x, *y, *vx, *vy, *rho, *mass, *p;
-  int n_owned;
+  const double* volume;  // m / rho, precomputed once per step for owned and ghosts
+  int n_owned, n_local;
 };
 
 // Determinant below which L_i (eq. 7) is not inverted and the plain SPH gradient is used (isolated particles,

@@ -103,7 +103,7 @@ class Fluid {
   int n_owned_ = 0, n_local_ = 0;
   long n_global_ = 0;
   std::vector<std::int64_t> gid_;
-  std::vector<double> x_, y_, vx_, vy_, rho_, mass_, p_;
+  std::vector<double> x_, y_, vx_, vy_, rho_, mass_, p_, volume_;
   std::vector<int> cell_;
   std::vector<double> grad_rho_;
   Rates rates_;

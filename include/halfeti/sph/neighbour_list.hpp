@@ -1,7 +1,8 @@
 // Neighbour pairs of the owned fluid particles, in canonical order (global cell order, then global id) so that
 // every per-particle sum is done in the same order whatever the rank count. Rebuilt every step from the particles
 // binned in the cell grid (owned + ghosts). Each pair stores what the physics needs: the separation
-// r_ji = r_j - r_i, its length, W and F = W'(r)/r, so that grad_i W_ij = -F r_ji.
+// r_ji = r_j - r_i, W and F = W'(r)/r, so that grad_i W_ij = -F r_ji (|r_ji|^2 is recomputed from r_ji: cheaper
+// than storing it).
 #pragma once
 
 #include <cstdint>
@@ -20,13 +21,17 @@ struct Barrier {
 struct PairList {
   std::vector<int> start;  // pairs of owned particle i are [start[i], start[i+1])
   std::vector<int> j;
-  std::vector<double> ex, ey, r, w, f;
+  std::vector<double> ex, ey, w, f;
   void clear() {
-    j.clear(); ex.clear(); ey.clear(); r.clear(); w.clear(); f.clear();
+    j.clear(); ex.clear(); ey.clear(); w.clear(); f.clear();
   }
-  void push(int jj, double dx, double dy, double rr, const Kernel& k) {
-    j.push_back(jj); ex.push_back(dx); ey.push_back(dy); r.push_back(rr);
-    w.push_back(k.value(rr)); f.push_back(k.derivative(rr) / rr);
+  void push(int jj, double dx, double dy, double rr, const KernelEvaluator& k) {
+    double ww, ff;
+    k(rr, ww, ff);
+    j.push_back(jj); ex.push_back(dx); ey.push_back(dy); w.push_back(ww); f.push_back(ff);
+  }
+  void reserve(std::size_t n) {
+    j.reserve(n); ex.reserve(n); ey.reserve(n); w.reserve(n); f.reserve(n);
   }
   std::size_t size() const { return j.size(); }
   // No pairs for n particles (e.g. a scene without walls).
@@ -45,7 +50,8 @@ inline void for_each_neighbour(const PairList& pairs, int i, Fn&& fn) {
 
 class NeighbourSearch {
  public:
-  NeighbourSearch(const parallel::CellGrid& grid, const Kernel& kernel) : grid_(grid), kernel_(kernel) {}
+  NeighbourSearch(const parallel::CellGrid& grid, const Kernel& kernel)
+      : grid_(grid), kernel_(kernel), eval_(kernel) {}
 
   // Binds fixed points (set 0: wall particles, set 1: wall ghosts), searched by wall_pairs(); their index order
   // is canonical.
@@ -67,10 +73,13 @@ class NeighbourSearch {
 
   parallel::CellGrid grid_;
   Kernel kernel_;
+  KernelEvaluator eval_;
   std::vector<int> cell_start_, cell_items_, cell_of_;  // local particles binned by cell, then gid
+  std::vector<double> bx_, by_;                          // their positions in binned order
   struct FixedBins {
     std::vector<int> start, items;
     std::vector<double> x, y;
+    std::vector<char> near;  // cell has fixed points in its 3x3 neighbourhood
   };
   FixedBins fixed_[2];
   std::vector<Barrier> barriers_;
