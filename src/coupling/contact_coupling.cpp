@@ -21,7 +21,8 @@ ContactCoupling::ContactCoupling(MPI_Comm world, structure::PlateSolver* solver,
   validate(params_);
   rank_ = comm_.rank();
   HALFETI_CHECK((rank_ == root_) == (solver_ != nullptr), "the plate solver must be given on the root rank only");
-  if (solver_ != nullptr) system_ = std::make_unique<ContactSystem>(*solver_, params_.constraint, params_.options_prefix);
+  if (solver_ != nullptr)
+    system_ = std::make_unique<ContactSystem>(*solver_, params_.constraint, params_.options_prefix, params_.solver);
   broadcast_surface();
 }
 

@@ -22,8 +22,30 @@ SurfacePolyline ContactSystem::surface(const PlateSolver& solver) {
   return s;
 }
 
-ContactSystem::ContactSystem(PlateSolver& solver, ContactConstraint form, std::string options_prefix)
-    : solver_(solver), form_(form), prefix_(std::move(options_prefix)), rows_per_(constraint_rows(form)) {}
+ContactSystem::ContactSystem(PlateSolver& solver, ContactConstraint form, std::string options_prefix,
+                             ContactSolver method)
+    : solver_(solver), form_(form), prefix_(std::move(options_prefix)), method_(method),
+      rows_per_(constraint_rows(form)) {}
+
+ContactSystem::LocalContact ContactSystem::local_contact(int i, const ContactInvader& inv, double dt) {
+  LocalContact lc;
+  const auto& seg = solver_.mesh().surface[static_cast<std::size_t>(inv.segment)];
+  lc.terms = evaluate_constraint(form_, y_[i], solver_.position(seg.first), solver_.position(seg.second), inv.eta,
+                                 inv.target_gap, lambda_[i]);
+  lc.q[0] = n_struct_ + 2 * i;
+  lc.q[1] = lc.q[0] + 1;
+  for (int c = 0; c < 2; ++c) {
+    lc.q[2 + c] = solver_.is_clamped(seg.first) ? -1 : 2 * seg.first + c;  // negative: PETSc skips
+    lc.q[4 + c] = solver_.is_clamped(seg.second) ? -1 : 2 * seg.second + c;
+  }
+  lc.participation = 2.0 * inv.mass / (dt * dt);  // mass matrix times 2 / dt^2 (section 2.3)
+  lc.rhs = contact_forces(lc.terms, lambda_[i]);
+  force_[i] = lc.rhs.head<2>();
+  structure_force_.segment<2>(2 * seg.first) += lc.rhs.segment<2>(2);
+  structure_force_.segment<2>(2 * seg.second) += lc.rhs.segment<2>(4);
+  lc.rhs.head<2>() -= lc.participation * (y_[i] - inv.predicted);
+  return lc;
+}
 
 void ContactSystem::build(const std::vector<ContactInvader>& invaders) {
   n_struct_ = solver_.dof_count();
@@ -85,30 +107,20 @@ std::pair<double, double> ContactSystem::assemble(const std::vector<ContactInvad
   HALFETI_PETSC_CALL(VecSet(rhs, 0.0));
   solver_.add_newton_system(a, rhs, 0);  // K_solid + K_cable + Newmark mass, r = R - F - M a (eq. 21, top rows)
 
-  const auto& surface = solver_.mesh().surface;
   const int n_particle = 2 * n_inv_;
   structure_force_ = Eigen::VectorXd::Zero(n_struct_);
   force_.assign(static_cast<std::size_t>(n_inv_), Eigen::Vector2d::Zero());
   for (int i = 0; i < n_inv_; ++i) {
-    const ContactInvader& inv = invaders[i];
-    const auto& seg = surface[static_cast<std::size_t>(inv.segment)];
-    const ConstraintTerms terms =
-        evaluate_constraint(form_, y_[i], solver_.position(seg.first), solver_.position(seg.second), inv.eta,
-                            inv.target_gap, lambda_[i]);
-    PetscInt q[6], mult[2];
-    q[0] = n_struct_ + 2 * i;
-    q[1] = q[0] + 1;
-    for (int c = 0; c < 2; ++c) {
-      q[2 + c] = solver_.is_clamped(seg.first) ? -1 : 2 * seg.first + c;  // negative: PETSc skips
-      q[4 + c] = solver_.is_clamped(seg.second) ? -1 : 2 * seg.second + c;
-    }
+    LocalContact lc = local_contact(i, invaders[i], dt);
+    const ConstraintTerms& terms = lc.terms;
+    PetscInt* q = lc.q;
+    PetscInt mult[2];
     for (int k = 0; k < rows_per_; ++k) mult[k] = n_struct_ + n_particle + rows_per_ * i + k;
 
     // H = -d2(lambda . c): the geometric part of the contact stiffness (symmetric).
     const Eigen::Matrix<double, 6, 6> h = -terms.hessian;
     HALFETI_PETSC_CALL(MatSetValues(a, 6, q, 6, q, h.data(), ADD_VALUES));
-    const double participation = 2.0 * inv.mass / (dt * dt);  // mass matrix times 2 / dt^2 (section 2.3)
-    for (int c = 0; c < 2; ++c) HALFETI_PETSC_CALL(MatSetValue(a, q[c], q[c], participation, ADD_VALUES));
+    for (int c = 0; c < 2; ++c) HALFETI_PETSC_CALL(MatSetValue(a, q[c], q[c], lc.participation, ADD_VALUES));
     // K_c and K_c^T of eq. 21: -A^T in the multiplier columns, -A in the multiplier rows; explicit zero diagonal.
     double rows_q[6 * 2], rows_m[2 * 6];
     for (int r = 0; r < 6; ++r)
@@ -119,14 +131,8 @@ std::pair<double, double> ContactSystem::assemble(const std::vector<ContactInvad
     HALFETI_PETSC_CALL(MatSetValues(a, 6, q, rows_per_, mult, rows_q, ADD_VALUES));
     HALFETI_PETSC_CALL(MatSetValues(a, rows_per_, mult, 6, q, rows_m, ADD_VALUES));
     for (int k = 0; k < rows_per_; ++k) HALFETI_PETSC_CALL(MatSetValue(a, mult[k], mult[k], 0.0, ADD_VALUES));
-
     // Right-hand side: contact forces A^T lambda on plate and particle, the particle's inertia, the overlap c.
-    Eigen::Matrix<double, 6, 1> f = contact_forces(terms, lambda_[i]);
-    force_[i] = f.head<2>();
-    structure_force_.segment<2>(2 * seg.first) += f.segment<2>(2);
-    structure_force_.segment<2>(2 * seg.second) += f.segment<2>(4);
-    f.head<2>() -= participation * (y_[i] - inv.predicted);
-    HALFETI_PETSC_CALL(VecSetValues(rhs, 6, q, f.data(), ADD_VALUES));
+    HALFETI_PETSC_CALL(VecSetValues(rhs, 6, q, lc.rhs.data(), ADD_VALUES));
     HALFETI_PETSC_CALL(VecSetValues(rhs, rows_per_, mult, terms.value.data(), ADD_VALUES));
   }
   HALFETI_PETSC_CALL(MatAssemblyBegin(a, MAT_FINAL_ASSEMBLY));
@@ -176,15 +182,18 @@ ContactSolveReport ContactSystem::solve(const std::vector<ContactInvader>& invad
   y_.clear();
   for (const auto& inv : invaders) y_.push_back(inv.predicted);
   lambda_.assign(invaders.size(), Eigen::Vector2d::Zero());
-  {
-    ScopedTimer timer(timers_, "assembly");
+  n_struct_ = solver_.dof_count();
+  n_inv_ = static_cast<int>(invaders.size());
+  if (method_ == ContactSolver::kSaddlePoint) {
+    ScopedTimer timer(timers_, "setup");
     build(invaders);
   }
   const auto& newton = solver_.parameters().newton;
   const double length_tolerance = newton.increment_rtol * solver_.parameters().geometry.height;
   double reference = 0.0, increment = -1.0;
   for (;;) {
-    const auto [force_norm, gap_norm] = assemble(invaders, dt);
+    const auto [force_norm, gap_norm] = method_ == ContactSolver::kSaddlePoint ? assemble(invaders, dt)
+                                                                                : assemble_condensed(invaders, dt);
     report.residual_history.push_back(force_norm);
     report.gap_history.push_back(gap_norm);
     double contact_norm = 0.0;
@@ -200,6 +209,12 @@ ContactSolveReport ContactSystem::solve(const std::vector<ContactInvader>& invad
                               << " invaders: ||r|| = " << force_norm << " N/m, overlap residual " << gap_norm
                               << " m, last increment " << increment << " m");
     const auto start = std::chrono::steady_clock::now();
+    if (method_ == ContactSolver::kCondensed) {
+      increment = solve_condensed(when);
+      report.solve_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      ++report.iterations;
+      continue;
+    }
     solve_linear(when);
     report.solve_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ++report.iterations;

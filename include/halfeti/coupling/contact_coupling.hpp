@@ -36,6 +36,7 @@ enum class VelocityUpdate { kAcceleration, kDisplacement };
 struct CouplingParameters {
   ContactConstraint constraint = ContactConstraint::kTied;  // scene: coupling.constraint: tied | normal
   VelocityUpdate velocity_update = VelocityUpdate::kAcceleration;  // scene: coupling.velocity_update
+  ContactSolver solver = ContactSolver::kCondensed;  // scene: coupling.solver: condensed | saddle_point
   SsosdParameters ssosd;                                    // scene: coupling.ssosd.{enabled,layer_ratio,velocity_floor}
   double inside_tolerance = 1e-9;  // m, > 0: an invader ending deeper than this past the surface is an error
   std::string options_prefix = "structure_contact_";  // PETSc options prefix of the contact KSP

@@ -6,9 +6,14 @@
 //
 // U: plate displacements (K_eff, r_s from PlateSolver::add_newton_system: Newmark-effective solid + cables),
 // y: invader positions, M_p = m 2/dt^2 (constant-acceleration mass participation), lambda: contact forces on the
-// invaders, c: the constraint of contact_constraint.hpp, A = dc/d(U, y), H = -d2(lambda . c). One sequential AIJ
-// matrix, fields ordered [plate dofs | invader dofs | multipliers]; KSP prefix "structure_contact_" (default
-// preonly + LU with MUMPS; PCFIELDSPLIT selectable with the splits "primal" and "contact"). See docs/coupling.md.
+// invaders, c: the constraint of contact_constraint.hpp, A = dc/d(U, y), H = -d2(lambda . c).
+// Two ways to solve it (ContactSolver):
+//   kCondensed (default): each invader's (dy, dl) block couples only to its segment's 4 plate dofs, so it is
+//     eliminated exactly (a dense 4 x 4 Schur update per invader) and the plate's own Newton system and KSP
+//     ("-structure_" options) solve what remains; dy and dl follow by back-substitution. Same answer, fastest.
+//   kSaddlePoint: the whole system as one sequential AIJ matrix, fields ordered [plate dofs | invader dofs |
+//     multipliers], KSP prefix "structure_contact_" (default preonly + LU with MUMPS; PCFIELDSPLIT selectable,
+//     with the splits "primal" and "contact"). See docs/coupling.md for the measured costs.
 #pragma once
 
 #include <Eigen/Dense>
@@ -41,11 +46,13 @@ struct ContactSolveReport {
   double solve_seconds = 0.0;            // KSP time in this call
 };
 
+enum class ContactSolver { kCondensed, kSaddlePoint };
+
 class ContactSystem {
  public:
   // solver: the plate, on this rank (the structure's communicator has one rank in this version).
   ContactSystem(structure::PlateSolver& solver, ContactConstraint form,
-                std::string options_prefix = "structure_contact_");
+                std::string options_prefix = "structure_contact_", ContactSolver method = ContactSolver::kCondensed);
   ContactSystem(const ContactSystem&) = delete;
   ContactSystem& operator=(const ContactSystem&) = delete;
 
@@ -65,14 +72,34 @@ class ContactSystem {
   PhaseTimers& timers() { return timers_; }
 
  private:
+  // One invader's share of the Newton system at the current iterate.
+  struct LocalContact {
+    PetscInt q[6];               // rows of (y, F, S) in the saddle-point numbering; -1 for clamped plate dofs
+    ConstraintTerms terms;
+    double participation = 0.0;  // 2 m / dt^2
+    Eigen::Matrix<double, 6, 1> rhs;  // A^T lambda, minus the particle's inertia on its rows
+  };
+  LocalContact local_contact(int i, const ContactInvader& inv, double dt);
+
   void build(const std::vector<ContactInvader>& invaders);
   // Assembles the Jacobian and right-hand side at the current iterate; returns (force norm, gap inf-norm).
   std::pair<double, double> assemble(const std::vector<ContactInvader>& invaders, double dt);
   void solve_linear(double when);
+  // The condensed path: assemble into the plate's own system, solve it, back-substitute (contact_condensed.cpp).
+  std::pair<double, double> assemble_condensed(const std::vector<ContactInvader>& invaders, double dt);
+  double solve_condensed(double when);  // applies the increments; returns the increment inf-norm
 
   structure::PlateSolver& solver_;
   ContactConstraint form_;
   std::string prefix_;
+  ContactSolver method_;
+  // Condensed path: per invader B^-1 C and B^-1 b_z of its eliminated (dy, dl) block (contact_condensed.cpp).
+  struct Eliminated {
+    Eigen::Matrix4d binv_c = Eigen::Matrix4d::Zero();
+    Eigen::Vector4d binv_b = Eigen::Vector4d::Zero();
+  };
+  std::vector<Eliminated> eliminated_;
+  std::vector<PetscInt> local_q_;  // the 4 plate dofs of each invader's segment (-1: clamped)
   int n_struct_ = 0, n_inv_ = 0, rows_per_ = 1;
   structure::OwnedMat matrix_;
   structure::OwnedVec rhs_, solution_;

@@ -151,11 +151,12 @@ TEST(ContactSystem, StaticPushEqualsThePointLoad) {
   EXPECT_LT(diff, 1e-8 * scale);
 }
 
-TEST(ContactSystem, FieldSplitSchurGivesTheDirectAnswer) {
+TEST(ContactSystem, CondensedMumpsAndFieldSplitGiveTheSameAnswer) {
   std::vector<Eigen::VectorXd> results;
-  for (int variant = 0; variant < 2; ++variant) {
-    const char* prefix = variant == 0 ? "structure_contact_" : "fs_test_";
-    if (variant == 1) {
+  for (int variant = 0; variant < 3; ++variant) {
+    const char* prefix = variant == 2 ? "fs_test_" : "structure_contact_";
+    const auto method = variant == 0 ? hc::ContactSolver::kCondensed : hc::ContactSolver::kSaddlePoint;
+    if (variant == 2) {
       PetscOptionsSetValue(nullptr, "-fs_test_ksp_type", "fgmres");
       PetscOptionsSetValue(nullptr, "-fs_test_ksp_rtol", "1e-13");
       PetscOptionsSetValue(nullptr, "-fs_test_pc_type", "fieldsplit");
@@ -169,11 +170,34 @@ TEST(ContactSystem, FieldSplitSchurGivesTheDirectAnswer) {
       PetscOptionsSetValue(nullptr, "-fs_test_fieldsplit_contact_pc_type", "lu");
     }
     hs::PlateSolver s(PETSC_COMM_SELF, plate(2, 20));
-    hc::ContactSystem sys(s, hc::ContactConstraint::kTied, prefix);
+    hc::ContactSystem sys(s, hc::ContactConstraint::kTied, prefix, method);
     const auto inv = hc::testing::right_face_invaders(s, heights(12, 0.02, 0.078), 2e-4);
     press(s, sys, inv, 1e-4);
     results.push_back(s.displacement());
   }
   PetscOptionsClear(nullptr);
-  EXPECT_LT((results[0] - results[1]).lpNorm<Eigen::Infinity>(), 1e-9 * results[0].lpNorm<Eigen::Infinity>());
+  for (int v = 1; v < 3; ++v)
+    EXPECT_LT((results[0] - results[v]).lpNorm<Eigen::Infinity>(), 1e-9 * results[0].lpNorm<Eigen::Infinity>());
+}
+
+TEST(ContactSystem, CondensedAndSaddlePointAgree) {
+  for (auto form : {hc::ContactConstraint::kTied, hc::ContactConstraint::kNormal}) {
+    std::vector<Eigen::VectorXd> plate_u;
+    std::vector<std::vector<Eigen::Vector2d>> forces;
+    std::vector<int> iterations;
+    for (auto method : {hc::ContactSolver::kCondensed, hc::ContactSolver::kSaddlePoint}) {
+      hs::PlateSolver s(PETSC_COMM_SELF, plate(2, 20));
+      hc::ContactSystem sys(s, form, "structure_contact_", method);
+      auto inv = hc::testing::right_face_invaders(s, heights(12, 0.02, 0.078), 4e-4, 1e-4);
+      for (auto& i : inv) i.mass *= 50.0;
+      iterations.push_back(press(s, sys, inv, 1e-3).iterations);
+      plate_u.push_back(s.displacement());
+      forces.push_back(sys.forces());
+    }
+    EXPECT_EQ(iterations[0], iterations[1]);
+    const double scale = plate_u[0].lpNorm<Eigen::Infinity>();
+    EXPECT_LT((plate_u[0] - plate_u[1]).lpNorm<Eigen::Infinity>(), 1e-9 * scale);
+    for (std::size_t i = 0; i < forces[0].size(); ++i)
+      EXPECT_LT((forces[0][i] - forces[1][i]).norm(), 1e-8 * forces[0][i].norm());
+  }
 }
