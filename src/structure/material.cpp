@@ -1,5 +1,6 @@
 #include "halfeti/structure/material.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "halfeti/core/error.hpp"
@@ -12,10 +13,10 @@ namespace {
 constexpr int kVoigtI[4] = {0, 1, 0, 2};
 constexpr int kVoigtJ[4] = {0, 1, 1, 2};
 
-Eigen::Matrix3d full_c(const Eigen::Matrix2d& c, double c33) {
+Eigen::Matrix3d full_3d(const Eigen::Matrix2d& in_plane, double out_of_plane) {
   Eigen::Matrix3d full = Eigen::Matrix3d::Zero();
-  full.topLeftCorner<2, 2>() = c;
-  full(2, 2) = c33;
+  full.topLeftCorner<2, 2>() = in_plane;
+  full(2, 2) = out_of_plane;
   return full;
 }
 
@@ -44,27 +45,30 @@ Material::Material(double youngs_modulus, double poisson_ratio)
   lambda_ = youngs_modulus * poisson_ratio / ((1.0 + poisson_ratio) * (1.0 - 2.0 * poisson_ratio));
 }
 
-MaterialResponse NeoHookean::evaluate(const Eigen::Matrix2d& c, double c33, EnergyPart part) const {
-  const double det_c = c.determinant() * c33;
-  if (!(det_c > 0.0)) HALFETI_NUMERICAL_ERROR("Neo-Hookean point inverted: det C = " << det_c << " <= 0");
-  const Eigen::Matrix3d c_inv = full_c(c.inverse(), 1.0 / c33);
-  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
-  const double log_j = 0.5 * std::log(det_c);
-  const double i1 = c.trace() + c33;
+MaterialResponse NeoHookean::evaluate(const Eigen::Matrix2d& e, double e33, EnergyPart part) const {
+  // det C = det(I + 2E) = (1 + 2 tr e + 4 det e)(1 + 2 e33) in 2D + 1: taken through log1p, ln J keeps its digits.
+  const double det_in_plane_minus_one = 2.0 * e.trace() + 4.0 * e.determinant();
+  if (!(det_in_plane_minus_one > -1.0) || !(e33 > -0.5))
+    HALFETI_NUMERICAL_ERROR("Neo-Hookean point inverted: det C <= 0 (E = [" << e(0, 0) << ", " << e(1, 1) << ", "
+                                                                           << e(0, 1) << "], E33 = " << e33 << ")");
+  const double log_j = 0.5 * (std::log1p(det_in_plane_minus_one) + std::log1p(2.0 * e33));
+  const Eigen::Matrix3d strain = full_3d(e, e33);
+  const Eigen::Matrix3d c_inv = (Eigen::Matrix3d::Identity() + 2.0 * strain).inverse();
   const bool shear = part != EnergyPart::kBulk, bulk = part != EnergyPart::kShear;
   const double mu = shear ? this->mu() : 0.0, lambda = bulk ? this->lambda() : 0.0;
 
   MaterialResponse r;
-  r.energy = 0.5 * mu * (i1 - 3.0) - mu * log_j + 0.5 * lambda * log_j * log_j;
-  r.stress = to_voigt(mu * (identity - c_inv) + lambda * log_j * c_inv);
+  r.energy = mu * strain.trace() - mu * log_j + 0.5 * lambda * log_j * log_j;  // I1 - 3 = 2 tr E
+  // I - C^-1 = C^-1 (C - I) = 2 C^-1 E: no cancellation at small strain.
+  r.stress = to_voigt(2.0 * mu * c_inv * strain + lambda * log_j * c_inv);
   // D = 2 dS/dC = lambda C^-1 (x) C^-1 + (mu - lambda ln J)(C^-1_IK C^-1_JL + C^-1_IL C^-1_JK)
   r.tangent = tensor_tangent(lambda, c_inv, mu - lambda * log_j, c_inv);
   return r;
 }
 
-MaterialResponse StVenantKirchhoff::evaluate(const Eigen::Matrix2d& c, double c33, EnergyPart part) const {
+MaterialResponse StVenantKirchhoff::evaluate(const Eigen::Matrix2d& e2, double e33, EnergyPart part) const {
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
-  const Eigen::Matrix3d e = 0.5 * (full_c(c, c33) - identity);
+  const Eigen::Matrix3d e = full_3d(e2, e33);
   const bool shear = part != EnergyPart::kBulk, bulk = part != EnergyPart::kShear;
   const double mu = shear ? this->mu() : 0.0, lambda = bulk ? this->lambda() : 0.0;
   const double tr_e = e.trace();
@@ -106,36 +110,38 @@ std::string to_string(PlaneHypothesis hypothesis) {
   return hypothesis == PlaneHypothesis::kPlaneStrain ? "plane_strain" : "plane_stress";
 }
 
-PlaneResponse plane_response(const Material& material, const Eigen::Matrix2d& c, PlaneHypothesis hypothesis,
+PlaneResponse plane_response(const Material& material, const Eigen::Matrix2d& e, PlaneHypothesis hypothesis,
                              EnergyPart part) {
   PlaneResponse out;
   MaterialResponse r;
+  double e33 = 0.0;
   if (hypothesis == PlaneHypothesis::kPlaneStrain) {
-    r = material.evaluate(c, 1.0, part);
+    r = material.evaluate(e, 0.0, part);
     out.tangent = r.tangent.topLeftCorner<3, 3>();
   } else {
     HALFETI_CHECK(part == EnergyPart::kAll, "plane stress has no volumetric locking: integrate the whole energy");
-    // Newton on S33(C33) = 0; dS33/dC33 = D33 / 2. Start from the small-strain guess.
+    // Newton on S33(E33) = 0, dS33/dE33 = D33, from E33 = 0.
     const double scale = material.mu() + material.lambda();
-    double c33 = 1.0;
     for (int it = 0;; ++it) {
-      r = material.evaluate(c, c33, part);
-      if (std::abs(r.stress(3)) <= 1e-13 * scale) break;
+      r = material.evaluate(e, e33, part);
+      if (std::abs(r.stress(3)) <= 1e-13 * scale * std::max(1.0, e.norm())) break;
       if (it == 50)
-        HALFETI_NUMERICAL_ERROR("plane stress: S33 = 0 not reached at C33 = " << c33 << " (S33 = "
-                                                                              << r.stress(3) << " Pa)");
-      double next = c33 - 2.0 * r.stress(3) / r.tangent(3, 3);
-      c33 = next > 0.0 ? next : 0.5 * c33;  // stay in the admissible half-line
+        HALFETI_NUMERICAL_ERROR("plane stress: S33 = 0 not reached at E33 = " << e33 << " (S33 = " << r.stress(3)
+                                                                              << " Pa)");
+      const double next = e33 - r.stress(3) / r.tangent(3, 3);
+      e33 = next > -0.5 ? next : 0.5 * (e33 - 0.5);  // keep C33 = 1 + 2 E33 positive
     }
-    out.c33 = c33;
     out.tangent = r.tangent.topLeftCorner<3, 3>() -
                   r.tangent.topRightCorner<3, 1>() * r.tangent.bottomLeftCorner<1, 3>() / r.tangent(3, 3);
   }
+  out.c33 = 1.0 + 2.0 * e33;
   out.energy = r.energy;
   out.stress = r.stress.head<3>();
   out.s33 = r.stress(3);
   return out;
 }
+
+Eigen::Matrix2d green_lagrange(const Eigen::Matrix2d& h) { return 0.5 * (h + h.transpose() + h.transpose() * h); }
 
 Eigen::Vector4d cauchy_stress(const Eigen::Matrix2d& f, double f33, const Eigen::Vector4d& s) {
   Eigen::Matrix2d s2;

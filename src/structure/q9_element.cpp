@@ -13,9 +13,9 @@ constexpr double kGauss3[3] = {-0.7745966692414834, 0.0, 0.7745966692414834};
 constexpr double kWeight3[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
 constexpr double kGauss2[2] = {-0.5773502691896257, 0.5773502691896257};
 
-// F = I + sum_a u_a (x) dN_a/dX (displacement gradient: no round-off from the size of the coordinates).
-Eigen::Matrix2d deformation_gradient(const Q9Coordinates& u, const Eigen::Matrix<double, kQ9Nodes, 2>& g) {
-  return Eigen::Matrix2d::Identity() + u.transpose() * g;
+// H = sum_a u_a (x) dN_a/dX, F = I + H (no round-off from the size of the coordinates).
+Eigen::Matrix2d displacement_gradient(const Q9Coordinates& u, const Eigen::Matrix<double, kQ9Nodes, 2>& g) {
+  return u.transpose() * g;
 }
 
 Q9Point reference_point(const Q9Coordinates& reference, double xi, double eta, double weight) {
@@ -71,11 +71,12 @@ template <bool kTangent>
 void HyperelasticQ9::accumulate(const Q9Point& p, const Q9Coordinates& u, EnergyPart part, Q9Vector& force,
                                 Q9Matrix* tangent) const {
   const auto& g = p.gradient;
-  const Eigen::Matrix2d f = deformation_gradient(u, g);
+  const Eigen::Matrix2d h = displacement_gradient(u, g);
+  const Eigen::Matrix2d f = Eigen::Matrix2d::Identity() + h;
   if (!(f.determinant() > 0.0))
     HALFETI_NUMERICAL_ERROR("structure: inverted element point (det F = " << f.determinant()
                                                                            << " <= 0): deformation too large");
-  const PlaneResponse r = plane_response(material_, f.transpose() * f, options_.hypothesis, part);
+  const PlaneResponse r = plane_response(material_, green_lagrange(h), options_.hypothesis, part);
   Eigen::Matrix2d s;
   s << r.stress(0), r.stress(2), r.stress(2), r.stress(1);
   const double w = p.weight;
@@ -125,8 +126,8 @@ void mirror_and_interleave(const Q9Matrix& component_major, Q9Matrix& k) {
 double HyperelasticQ9::energy(const Q9Geometry& g, const Q9Coordinates& u) const {
   double e = 0.0;
   auto add = [&](const Q9Point& p, EnergyPart part) {
-    const Eigen::Matrix2d f = deformation_gradient(u, p.gradient);
-    e += p.weight * plane_response(material_, f.transpose() * f, options_.hypothesis, part).energy;
+    const Eigen::Matrix2d h = displacement_gradient(u, p.gradient);
+    e += p.weight * plane_response(material_, green_lagrange(h), options_.hypothesis, part).energy;
   };
   if (split()) {
     for (const auto& p : g.full) add(p, EnergyPart::kShear);
@@ -169,8 +170,9 @@ Eigen::Matrix<double, kQ9Nodes, kQ9Nodes> HyperelasticQ9::scalar_mass(const Q9Ge
 std::array<Eigen::Vector4d, 9> HyperelasticQ9::cauchy_at_points(const Q9Geometry& g, const Q9Coordinates& u) const {
   std::array<Eigen::Vector4d, 9> out;
   for (int q = 0; q < 9; ++q) {
-    const Eigen::Matrix2d f = deformation_gradient(u, g.full[q].gradient);
-    const PlaneResponse r = plane_response(material_, f.transpose() * f, options_.hypothesis);
+    const Eigen::Matrix2d h = displacement_gradient(u, g.full[q].gradient);
+    const Eigen::Matrix2d f = Eigen::Matrix2d::Identity() + h;
+    const PlaneResponse r = plane_response(material_, green_lagrange(h), options_.hypothesis);
     const Eigen::Vector4d s(r.stress(0), r.stress(1), r.stress(2), r.s33);
     out[q] = cauchy_stress(f, std::sqrt(r.c33), s);
   }

@@ -1,7 +1,9 @@
 // Hyperelastic materials at a point (the first of the three MFEM-style layers: material -> element integrator ->
 // global assembly). A material gives the strain energy density W, the second Piola-Kirchhoff stress S and the
-// material tangent D = dS/dE at a right Cauchy-Green tensor C that has an in-plane 2x2 block and an out-of-plane
-// component C33 (no out-of-plane shear: the plate is 2D, per unit depth).
+// material tangent D = dS/dE at a Green-Lagrange strain E = (C - I)/2 that has an in-plane 2x2 block and an
+// out-of-plane component E33 (no out-of-plane shear: the plate is 2D, per unit depth). The input is E, not C:
+// at the strains of a vibrating plate (1e-6) C - I and ln J computed from C lose ten digits, and lambda ln J
+// (lambda = 3e7 Pa for nu = 0.45) would put a round-off floor under the Newton residual.
 //
 // Voigt order everywhere: [11, 22, 12, 33]; strains with engineering shear, E_v = [E11, E22, 2 E12, E33], so that
 // dS_v = D dE_v with D symmetric.
@@ -37,8 +39,8 @@ class Material {
   virtual ~Material() = default;
 
   virtual std::string name() const = 0;
-  // C: in-plane block of C = F^T F; c33 = F33^2. Throws NumericalError if det C <= 0 (an inverted point).
-  virtual MaterialResponse evaluate(const Eigen::Matrix2d& c, double c33, EnergyPart part) const = 0;
+  // e: in-plane block of E; e33 = (F33^2 - 1)/2. Throws NumericalError if det C <= 0 (an inverted point).
+  virtual MaterialResponse evaluate(const Eigen::Matrix2d& e, double e33, EnergyPart part) const = 0;
 
   double mu() const { return mu_; }
   double lambda() const { return lambda_; }
@@ -55,7 +57,7 @@ class NeoHookean final : public Material {
  public:
   using Material::Material;
   std::string name() const override { return "neo_hookean"; }
-  MaterialResponse evaluate(const Eigen::Matrix2d& c, double c33, EnergyPart part) const override;
+  MaterialResponse evaluate(const Eigen::Matrix2d& e, double e33, EnergyPart part) const override;
 };
 
 // St. Venant-Kirchhoff: W = lambda/2 (tr E)^2 + mu E:E,  S = lambda tr E I + 2 mu E. Fine for moderate strains;
@@ -64,7 +66,7 @@ class StVenantKirchhoff final : public Material {
  public:
   using Material::Material;
   std::string name() const override { return "st_venant_kirchhoff"; }
-  MaterialResponse evaluate(const Eigen::Matrix2d& c, double c33, EnergyPart part) const override;
+  MaterialResponse evaluate(const Eigen::Matrix2d& e, double e33, EnergyPart part) const override;
 };
 
 enum class MaterialModel { kNeoHookean, kStVenantKirchhoff };
@@ -78,7 +80,7 @@ std::string to_string(MaterialModel model);
 std::string to_string(PlaneHypothesis hypothesis);
 
 // The in-plane response the element uses: S and D in Voigt [11, 22, 12] (engineering shear), energy, and the
-// out-of-plane state. Plane strain takes C33 = 1; plane stress solves S33(C33) = 0 by Newton and condenses the
+// out-of-plane state. Plane strain takes E33 = 0; plane stress solves S33(E33) = 0 by Newton and condenses the
 // tangent, D = D_pp - D_p3 D_3p / D_33 (exact linearisation of the constrained point).
 struct PlaneResponse {
   double energy = 0.0;
@@ -88,8 +90,10 @@ struct PlaneResponse {
   double s33 = 0.0;   // out-of-plane S (non-zero in plane strain)
 };
 
-PlaneResponse plane_response(const Material& material, const Eigen::Matrix2d& c, PlaneHypothesis hypothesis,
+PlaneResponse plane_response(const Material& material, const Eigen::Matrix2d& e, PlaneHypothesis hypothesis,
                              EnergyPart part = EnergyPart::kAll);
+// E = (H + H^T + H^T H) / 2 from the displacement gradient H = F - I, without forming C.
+Eigen::Matrix2d green_lagrange(const Eigen::Matrix2d& displacement_gradient);
 
 // Cauchy stress (Voigt [11, 22, 12, 33]) and its von Mises equivalent from F (2x2), F33 and S.
 Eigen::Vector4d cauchy_stress(const Eigen::Matrix2d& f, double f33, const Eigen::Vector4d& s);

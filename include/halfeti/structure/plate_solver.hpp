@@ -61,7 +61,7 @@ struct NewmarkParameters {
 
 struct NewtonParameters {
   int max_iterations = 25;        // >= 1
-  double residual_rtol = 1e-8;    // ||r|| / max(||r_first||, ||R||, ||F + M a||) of the iteration, (0, 1)
+  double residual_rtol = 1e-6;    // ||r|| / max(||r_first||, ||R||, ||F + M a||) of the iteration, (0, 1)
   double residual_atol = 1e-12;   // N/m, >= 0
   double increment_rtol = 1e-10;  // ||du||_inf / plate height, > 0
 };
