@@ -166,7 +166,6 @@ class PlateSolver {
   template <typename ElementSink, typename NodalSink>
   void compute_newton_terms(ElementSink&& element_sink, NodalSink&& nodal_sink);
   void compute_external(double t);
-  void assemble_local(Mode mode);  // residual_ and element matrices into matrix_ via add_newton_system
   Q9Coordinates element_displacement(int e) const;
   void update_acceleration();
   Eigen::VectorXd gather_in_node_order(Vec v);  // a distributed Vec of the owned layout, on every rank
