@@ -1,12 +1,12 @@
-// The condensed solve of eq. 21. Each invader's unknowns z = (dy, dl) couple only to the 4 dofs s of its segment:
+// The condensed solve of eq. 21. Each invader's unknowns z = (dy, dl) couple only to the 4 dofs s of its
+// segment:
 //   [K + H_ss   C^T] [du_s]   [b_s]        B = [ M_p + H_yy  -A_y^T ]     C = [ H_ys ]
 //   [C          B  ] [z   ] = [b_z],           [ -A_y         0     ],        [ -A_s ],
 // B is invertible (A_y = I tied, n^T normal; M_p > 0), so z = B^-1 (b_z - C du_s) and the plate solves
 //   (K + H_ss - C^T B^-1 C) du = b_s - C^T B^-1 b_z
-// with its own matrix, pattern and KSP (the segment's nodes already share an element). Exact block elimination:
-// the same Newton iterates as the saddle-point matrix, to round-off.
+// with its own matrix, pattern and KSP (the segment's nodes already share an element). Exact block
+// elimination: the same Newton iterates as the saddle-point matrix, to round-off.
 #include <Eigen/LU>
-
 #include <algorithm>
 #include <cmath>
 
@@ -25,7 +25,8 @@ std::pair<double, double> ContactSystem::assemble_condensed(const std::vector<Co
   local_q_.assign(4 * static_cast<std::size_t>(n_inv_), -1);
   Mat a = solver_.newton_matrix();
   Vec rhs = solver_.newton_residual();
-  // The plate's rows of eq. 21's residual before the elimination: r + A_s^T lambda (A_s^T lambda added below).
+  // The plate's rows of eq. 21's residual before the elimination: r + A_s^T lambda (A_s^T lambda added
+  // below).
   Eigen::VectorXd plate_rows(n_struct_);
   {
     const PetscScalar* values = nullptr;
@@ -77,8 +78,8 @@ double ContactSystem::solve_condensed(double when) {
   try {
     du = solver_.solve_newton_increment();  // the plate's KSP ("-structure_" options)
   } catch (const NumericalError& e) {
-    HALFETI_NUMERICAL_ERROR("coupling: condensed contact solve (eq. 21) at t = " << when << " s with " << n_inv_
-                                                                                  << " invaders: " << e.what());
+    HALFETI_NUMERICAL_ERROR("coupling: condensed contact solve (eq. 21) at t = "
+                            << when << " s with " << n_inv_ << " invaders: " << e.what());
   }
   solver_.apply_increment(du, 0);
   const PetscScalar* s = nullptr;

@@ -15,14 +15,16 @@ void validate(const CouplingParameters& p) {
     HALFETI_USER_ERROR("coupling.inside_tolerance = " << p.inside_tolerance << " m must be > 0");
 }
 
-ContactCoupling::ContactCoupling(MPI_Comm world, structure::PlateSolver* solver, const CouplingParameters& params,
-                                 int root)
+ContactCoupling::ContactCoupling(MPI_Comm world, structure::PlateSolver* solver,
+                                 const CouplingParameters& params, int root)
     : comm_(world), root_(root), solver_(solver), params_(params) {
   validate(params_);
   rank_ = comm_.rank();
-  HALFETI_CHECK((rank_ == root_) == (solver_ != nullptr), "the plate solver must be given on the root rank only");
+  HALFETI_CHECK((rank_ == root_) == (solver_ != nullptr),
+                "the plate solver must be given on the root rank only");
   if (solver_ != nullptr)
-    system_ = std::make_unique<ContactSystem>(*solver_, params_.constraint, params_.options_prefix, params_.solver);
+    system_ =
+        std::make_unique<ContactSystem>(*solver_, params_.constraint, params_.options_prefix, params_.solver);
   broadcast_surface();
 }
 
@@ -88,9 +90,10 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
     const Eigen::Vector2d& y = system_->positions()[k];
     const ContactPoint c = closest_segment(after, y);
     if (c.projection.gap < -params_.inside_tolerance)
-      HALFETI_NUMERICAL_ERROR("particle " << gathered[k].gid << " left inside the plate after the contact solve ("
-                                          << c.projection.gap << " m past segment " << c.segment << ") at ("
-                                          << y.x() << ", " << y.y() << ") m");
+      HALFETI_NUMERICAL_ERROR("particle "
+                              << gathered[k].gid << " left inside the plate after the contact solve ("
+                              << c.projection.gap << " m past segment " << c.segment << ") at (" << y.x()
+                              << ", " << y.y() << ") m");
     const Eigen::Vector2d& f = system_->forces()[k];
     InvaderCorrection& out = corrections[k];
     out.dx = y.x() - gathered[k].x;
@@ -118,7 +121,8 @@ const CouplingStepReport& ContactCoupling::step(double t, double dt, const Inter
     double u_max = 0.0;
     for (std::size_t i = 0; i < particles.count; ++i)
       u_max = std::max(u_max, std::hypot(particles.vx[i], particles.vy[i]));
-    MPI_Allreduce(MPI_IN_PLACE, &u_max, 1, MPI_DOUBLE, MPI_MAX, comm_.get());  // max is exact: rank-independent
+    MPI_Allreduce(MPI_IN_PLACE, &u_max, 1, MPI_DOUBLE, MPI_MAX,
+                  comm_.get());  // max is exact: rank-independent
     last_.u_max = u_max;
     last_.layer = layer_thickness(params_.ssosd, u_max, dt);
     local = find_local_invaders(particles, surface_, last_.layer, rank_);
@@ -138,7 +142,8 @@ const CouplingStepReport& ContactCoupling::step(double t, double dt, const Inter
     } catch (const Error& e) {
       failed = e.kind() == ErrorKind::kNumerical ? 1 : 2;
       std::ostringstream s;
-      s << "coupling step t = " << t << " -> " << t + dt << " s (" << gathered.size() << " invaders): " << e.what();
+      s << "coupling step t = " << t << " -> " << t + dt << " s (" << gathered.size()
+        << " invaders): " << e.what();
       message = s.str();
     }
   }
@@ -155,8 +160,8 @@ const CouplingStepReport& ContactCoupling::step(double t, double dt, const Inter
   {
     ScopedTimer timer(timers_, "handback");
     scatter_corrections(comm_.get(), root_, gathered, corrections, particles, out);
-    double summary[5] = {static_cast<double>(gathered.size()), static_cast<double>(last_.newton_iterations), 0.0,
-                         0.0, 0.0};
+    double summary[5] = {static_cast<double>(gathered.size()), static_cast<double>(last_.newton_iterations),
+                         0.0, 0.0, 0.0};
     for (const auto& c : corrections) {  // root only; gid order: a fixed summation order
       summary[2] += c.fx;
       summary[3] += c.fy;

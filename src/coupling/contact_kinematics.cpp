@@ -1,5 +1,6 @@
-// Contact kinematics of eq. 20. As printed, eq. 20 projects with n^T; the contact parameter along F -> S needs the
-// unit tangent (n . (r_inv - O - r_F) is zero by construction of the overlap O along n), see docs/coupling.md.
+// Contact kinematics of eq. 20. As printed, eq. 20 projects with n^T; the contact parameter along F -> S
+// needs the unit tangent (n . (r_inv - O - r_F) is zero by construction of the overlap O along n), see
+// docs/coupling.md.
 #include "halfeti/coupling/contact_kinematics.hpp"
 
 #include <algorithm>
@@ -30,8 +31,8 @@ ContactPoint closest_segment(const SurfacePolyline& surface, const Eigen::Vector
   for (int k = 0; k < surface.segment_count(); ++k) {
     const SegmentProjection p = project_on_segment(x, surface.points[k], surface.points[k + 1]);
     const bool closer = best.segment < 0 || p.distance < best.projection.distance;
-    const bool tie_in_front = best.segment >= 0 && p.distance == best.projection.distance &&
-                              p.gap > best.projection.gap;
+    const bool tie_in_front =
+        best.segment >= 0 && p.distance == best.projection.distance && p.gap > best.projection.gap;
     if (closer || tie_in_front) {
       best.segment = k;
       best.projection = p;

@@ -24,14 +24,17 @@ SurfacePolyline ContactSystem::surface(const PlateSolver& solver) {
 
 ContactSystem::ContactSystem(PlateSolver& solver, ContactConstraint form, std::string options_prefix,
                              ContactSolver method)
-    : solver_(solver), form_(form), prefix_(std::move(options_prefix)), method_(method),
+    : solver_(solver),
+      form_(form),
+      prefix_(std::move(options_prefix)),
+      method_(method),
       rows_per_(constraint_rows(form)) {}
 
 ContactSystem::LocalContact ContactSystem::local_contact(int i, const ContactInvader& inv, double dt) {
   LocalContact lc;
   const auto& seg = solver_.mesh().surface[static_cast<std::size_t>(inv.segment)];
-  lc.terms = evaluate_constraint(form_, y_[i], solver_.position(seg.first), solver_.position(seg.second), inv.eta,
-                                 inv.target_gap, lambda_[i]);
+  lc.terms = evaluate_constraint(form_, y_[i], solver_.position(seg.first), solver_.position(seg.second),
+                                 inv.eta, inv.target_gap, lambda_[i]);
   lc.q[0] = n_struct_ + 2 * i;
   lc.q[1] = lc.q[0] + 1;
   for (int c = 0; c < 2; ++c) {
@@ -54,9 +57,9 @@ void ContactSystem::build(const std::vector<ContactInvader>& invaders) {
   const PetscInt total = n_struct_ + n_particle + n_mult;
   const auto& surface = solver_.mesh().surface;
 
-  // Preallocation from the plate's graph plus each invader's couplings: its 2 dofs, its segment's 4 dofs and its
-  // multipliers. Rows of a segment node gain the invader's 2 + rows_per_ columns (the node pair is already
-  // coupled through their element).
+  // Preallocation from the plate's graph plus each invader's couplings: its 2 dofs, its segment's 4 dofs and
+  // its multipliers. Rows of a segment node gain the invader's 2 + rows_per_ columns (the node pair is
+  // already coupled through their element).
   std::vector<PetscInt> nnz(static_cast<std::size_t>(total), 0);
   const auto adjacency = solver_.node_adjacency();
   for (int node = 0; node < solver_.node_count(); ++node)
@@ -74,7 +77,8 @@ void ContactSystem::build(const std::vector<ContactInvader>& invaders) {
   HALFETI_PETSC_CALL(MatSetOption(matrix_.get(), MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
   HALFETI_PETSC_CALL(MatCreateVecs(matrix_.get(), solution_.out(), rhs_.out()));
 
-  // A new KSP per system size: the field index sets change with the invader count. Defaults, then options last.
+  // A new KSP per system size: the field index sets change with the invader count. Defaults, then options
+  // last.
   HALFETI_PETSC_CALL(KSPCreate(PETSC_COMM_SELF, ksp_.out()));
   HALFETI_PETSC_CALL(KSPSetOptionsPrefix(ksp_.get(), prefix_.c_str()));
   HALFETI_PETSC_CALL(KSPSetType(ksp_.get(), KSPPREONLY));
@@ -105,7 +109,8 @@ std::pair<double, double> ContactSystem::assemble(const std::vector<ContactInvad
   HALFETI_PETSC_CALL(MatAssembled(a, &assembled));
   if (assembled) HALFETI_PETSC_CALL(MatZeroEntries(a));
   HALFETI_PETSC_CALL(VecSet(rhs, 0.0));
-  solver_.add_newton_system(a, rhs, 0);  // K_solid + K_cable + Newmark mass, r = R - F - M a (eq. 21, top rows)
+  solver_.add_newton_system(a, rhs,
+                            0);  // K_solid + K_cable + Newmark mass, r = R - F - M a (eq. 21, top rows)
 
   const int n_particle = 2 * n_inv_;
   structure_force_ = Eigen::VectorXd::Zero(n_struct_);
@@ -121,7 +126,8 @@ std::pair<double, double> ContactSystem::assemble(const std::vector<ContactInvad
     const Eigen::Matrix<double, 6, 6> h = -terms.hessian;
     HALFETI_PETSC_CALL(MatSetValues(a, 6, q, 6, q, h.data(), ADD_VALUES));
     for (int c = 0; c < 2; ++c) HALFETI_PETSC_CALL(MatSetValue(a, q[c], q[c], lc.participation, ADD_VALUES));
-    // K_c and K_c^T of eq. 21: -A^T in the multiplier columns, -A in the multiplier rows; explicit zero diagonal.
+    // K_c and K_c^T of eq. 21: -A^T in the multiplier columns, -A in the multiplier rows; explicit zero
+    // diagonal.
     double rows_q[6 * 2], rows_m[2 * 6];
     for (int r = 0; r < 6; ++r)
       for (int k = 0; k < rows_per_; ++k) {
@@ -131,7 +137,8 @@ std::pair<double, double> ContactSystem::assemble(const std::vector<ContactInvad
     HALFETI_PETSC_CALL(MatSetValues(a, 6, q, rows_per_, mult, rows_q, ADD_VALUES));
     HALFETI_PETSC_CALL(MatSetValues(a, rows_per_, mult, 6, q, rows_m, ADD_VALUES));
     for (int k = 0; k < rows_per_; ++k) HALFETI_PETSC_CALL(MatSetValue(a, mult[k], mult[k], 0.0, ADD_VALUES));
-    // Right-hand side: contact forces A^T lambda on plate and particle, the particle's inertia, the overlap c.
+    // Right-hand side: contact forces A^T lambda on plate and particle, the particle's inertia, the overlap
+    // c.
     HALFETI_PETSC_CALL(VecSetValues(rhs, 6, q, lc.rhs.data(), ADD_VALUES));
     HALFETI_PETSC_CALL(VecSetValues(rhs, rows_per_, mult, terms.value.data(), ADD_VALUES));
   }
@@ -166,18 +173,18 @@ void ContactSystem::solve_linear(double when) {
       detail = std::string(" (preconditioner: ") + PCFailedReasons[pc_reason] + ")";
     }
     HALFETI_NUMERICAL_ERROR("coupling: contact solve (eq. 21) failed at t = "
-                            << when << " s with " << n_inv_ << " invaders: KSP reason " << KSPConvergedReasons[reason]
-                            << detail << "; the default is -" << prefix_ << "pc_type lu -" << prefix_
-                            << "pc_factor_mat_solver_type mumps");
+                            << when << " s with " << n_inv_ << " invaders: KSP reason "
+                            << KSPConvergedReasons[reason] << detail << "; the default is -" << prefix_
+                            << "pc_type lu -" << prefix_ << "pc_factor_mat_solver_type mumps");
   }
 }
 
 ContactSolveReport ContactSystem::solve(const std::vector<ContactInvader>& invaders, double dt, double when) {
   HALFETI_CHECK(dt > 0.0, "contact solve needs dt > 0 for the mass participation");
   for (const auto& inv : invaders)
-    HALFETI_CHECK(inv.mass > 0.0 && inv.segment >= 0 &&
-                      inv.segment < static_cast<int>(solver_.mesh().surface.size()),
-                  "invader with mass " << inv.mass << " on segment " << inv.segment);
+    HALFETI_CHECK(
+        inv.mass > 0.0 && inv.segment >= 0 && inv.segment < static_cast<int>(solver_.mesh().surface.size()),
+        "invader with mass " << inv.mass << " on segment " << inv.segment);
   ContactSolveReport report;
   y_.clear();
   for (const auto& inv : invaders) y_.push_back(inv.predicted);
@@ -192,22 +199,23 @@ ContactSolveReport ContactSystem::solve(const std::vector<ContactInvader>& invad
   const double length_tolerance = newton.increment_rtol * solver_.parameters().geometry.height;
   double reference = 0.0, increment = -1.0;
   for (;;) {
-    const auto [force_norm, gap_norm] = method_ == ContactSolver::kSaddlePoint ? assemble(invaders, dt)
-                                                                                : assemble_condensed(invaders, dt);
+    const auto [force_norm, gap_norm] =
+        method_ == ContactSolver::kSaddlePoint ? assemble(invaders, dt) : assemble_condensed(invaders, dt);
     report.residual_history.push_back(force_norm);
     report.gap_history.push_back(gap_norm);
     double contact_norm = 0.0;
     for (const auto& f : force_) contact_norm += f.squaredNorm();
     reference = std::max({reference, report.residual_history.front(), std::sqrt(contact_norm)});
     const bool residual_small =
-        force_norm <= std::max(newton.residual_atol, newton.residual_rtol * reference) && gap_norm <= length_tolerance;
+        force_norm <= std::max(newton.residual_atol, newton.residual_rtol * reference) &&
+        gap_norm <= length_tolerance;
     const bool increment_small = increment >= 0.0 && increment <= length_tolerance;
     if (residual_small || increment_small) break;
     if (report.iterations >= newton.max_iterations)
       HALFETI_NUMERICAL_ERROR("coupling: contact Newton (eq. 21) did not converge in "
-                              << newton.max_iterations << " iterations at t = " << when << " s with " << n_inv_
-                              << " invaders: ||r|| = " << force_norm << " N/m, overlap residual " << gap_norm
-                              << " m, last increment " << increment << " m");
+                              << newton.max_iterations << " iterations at t = " << when << " s with "
+                              << n_inv_ << " invaders: ||r|| = " << force_norm << " N/m, overlap residual "
+                              << gap_norm << " m, last increment " << increment << " m");
     const auto start = std::chrono::steady_clock::now();
     if (method_ == ContactSolver::kCondensed) {
       increment = solve_condensed(when);

@@ -14,8 +14,8 @@ void Corrections::reset(std::size_t count) {
   touched.clear();
 }
 
-std::vector<Invader> find_local_invaders(const InterfaceParticles& p, const SurfacePolyline& surface, double layer,
-                                         int rank) {
+std::vector<Invader> find_local_invaders(const InterfaceParticles& p, const SurfacePolyline& surface,
+                                         double layer, int rank) {
   std::vector<Invader> out;
   if (surface.segment_count() == 0) return out;
   const BoundingBox box = bounding_box(surface);
@@ -60,8 +60,8 @@ struct CorrectionMessage {
 }  // namespace
 
 void scatter_corrections(MPI_Comm comm, int root, const std::vector<Invader>& gathered,
-                         const std::vector<InvaderCorrection>& corrections, const InterfaceParticles& particles,
-                         Corrections& out) {
+                         const std::vector<InvaderCorrection>& corrections,
+                         const InterfaceParticles& particles, Corrections& out) {
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);

@@ -10,8 +10,8 @@ namespace halfeti::coupling {
 
 void validate(const SsosdParameters& p) {
   if (!(p.layer_ratio >= 5.0 && p.layer_ratio <= 50.0))
-    HALFETI_USER_ERROR("coupling.ssosd.layer_ratio = " << p.layer_ratio
-                                                       << " must lie in [5, 50] (eq. 23: 5 <= L / (u_max dt) <= 50)");
+    HALFETI_USER_ERROR("coupling.ssosd.layer_ratio = "
+                       << p.layer_ratio << " must lie in [5, 50] (eq. 23: 5 <= L / (u_max dt) <= 50)");
   if (!(p.velocity_floor > 0.0) || !std::isfinite(p.velocity_floor))
     HALFETI_USER_ERROR("coupling.ssosd.velocity_floor = " << p.velocity_floor << " m/s must be > 0");
 }
@@ -28,7 +28,7 @@ double modified_overlap(double overlap, double layer) {
 
 double relocated_gap(double gap, double layer) {
   if (!(layer > 0.0)) return std::max(gap, 0.0);
-  if (gap >= layer) return gap;  // outside the layer: untouched
+  if (gap >= layer) return gap;                    // outside the layer: untouched
   return layer * std::exp((gap - layer) / layer);  // = g + o'(L - g), computed without cancellation
 }
 

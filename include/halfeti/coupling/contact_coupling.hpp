@@ -1,6 +1,7 @@
 // One coupled step of water and plate through contact (DESIGN.md "One time step", steps 3-5): the interface
-// search on every rank, the gather to the structure's rank, Newton on eq. 21 with the plate, and the hand-back of
-// the corrections to the owning ranks. The application drives it between the fluid's prediction and its finish:
+// search on every rank, the gather to the structure's rank, Newton on eq. 21 with the plate, and the
+// hand-back of the corrections to the owning ranks. The application drives it between the fluid's prediction
+// and its finish:
 //
 //   fluid.compute_forces(); fluid.<predict>();                      // positions at t + dt without contact
 //   coupling.step(t, dt, view_of(fluid), corrections);               // collective over `world`
@@ -37,7 +38,7 @@ struct CouplingParameters {
   ContactConstraint constraint = ContactConstraint::kTied;  // scene: coupling.constraint: tied | normal
   VelocityUpdate velocity_update = VelocityUpdate::kAcceleration;  // scene: coupling.velocity_update
   ContactSolver solver = ContactSolver::kCondensed;  // scene: coupling.solver: condensed | saddle_point
-  SsosdParameters ssosd;                                    // scene: coupling.ssosd.{enabled,layer_ratio,velocity_floor}
+  SsosdParameters ssosd;           // scene: coupling.ssosd.{enabled,layer_ratio,velocity_floor}
   double inside_tolerance = 1e-9;  // m, > 0: an invader ending deeper than this past the surface is an error
   std::string options_prefix = "structure_contact_";  // PETSc options prefix of the contact KSP
 };
@@ -49,20 +50,22 @@ struct CouplingStepReport {
   int newton_iterations = 0;  // of the coupled Newton (or of the plate alone when there were no invaders)
   double layer = 0.0;         // m, SSOSD layer thickness L used (eq. 23), 0 without SSOSD
   double u_max = 0.0;         // m/s, max particle speed (all ranks) that set L
-  double force_x = 0.0, force_y = 0.0;  // N/m, total contact force on the particles (the plate gets the opposite)
-  double max_force = 0.0;     // N/m, largest |C| of one invader
+  double force_x = 0.0,
+         force_y = 0.0;    // N/m, total contact force on the particles (the plate gets the opposite)
+  double max_force = 0.0;  // N/m, largest |C| of one invader
 };
 
 class ContactCoupling {
  public:
   // Collective over world. solver: non-null on `root` only (it must outlive this object).
-  ContactCoupling(MPI_Comm world, structure::PlateSolver* solver, const CouplingParameters& params, int root = 0);
+  ContactCoupling(MPI_Comm world, structure::PlateSolver* solver, const CouplingParameters& params,
+                  int root = 0);
   ContactCoupling(const ContactCoupling&) = delete;
   ContactCoupling& operator=(const ContactCoupling&) = delete;
 
-  // Collective. Advances the plate from t to t + dt with the contact of the particles' predicted positions (at
-  // t + dt) and fills `out` with the corrections of this rank's owned particles. Same report on every rank.
-  // NumericalError on every rank together when the solve fails (with time, place and cause).
+  // Collective. Advances the plate from t to t + dt with the contact of the particles' predicted positions
+  // (at t + dt) and fills `out` with the corrections of this rank's owned particles. Same report on every
+  // rank. NumericalError on every rank together when the solve fails (with time, place and cause).
   const CouplingStepReport& step(double t, double dt, const InterfaceParticles& particles, Corrections& out);
 
   // The plate's current outer surface as segments, on every rank (for Fluid::set_barriers: no SPH interaction
@@ -78,7 +81,8 @@ class ContactCoupling {
  private:
   void broadcast_surface();
   // Root: the structure's part of step(); returns the corrections in gathered order.
-  std::vector<InvaderCorrection> solve_on_root(double t, double dt, double layer, const std::vector<Invader>& inv);
+  std::vector<InvaderCorrection> solve_on_root(double t, double dt, double layer,
+                                               const std::vector<Invader>& inv);
 
   Communicator comm_;
   int rank_ = 0, root_ = 0;

@@ -1,10 +1,9 @@
-// Particle-to-segment contact kinematics (eq. 20): where an SPH particle sits relative to the plate's deformed
-// outer surface. The surface is the plate mesh's ordered polyline (right face up, top leftwards, left face down);
-// the outward normal of a segment F -> S is its unit tangent turned clockwise.
+// Particle-to-segment contact kinematics (eq. 20): where an SPH particle sits relative to the plate's
+// deformed outer surface. The surface is the plate mesh's ordered polyline (right face up, top leftwards,
+// left face down); the outward normal of a segment F -> S is its unit tangent turned clockwise.
 #pragma once
 
 #include <Eigen/Dense>
-
 #include <vector>
 
 namespace halfeti::coupling {
@@ -30,8 +29,8 @@ SegmentProjection project_on_segment(const Eigen::Vector2d& x, const Eigen::Vect
                                      const Eigen::Vector2d& second);
 
 // The contact partner of a particle: the closest segment of the polyline (ties, e.g. outside a convex corner
-// where both neighbours are closest at their shared vertex, go to the segment with the larger gap, the face the
-// particle is most clearly in front of). signed_distance is the gap of that segment: < 0 means inside.
+// where both neighbours are closest at their shared vertex, go to the segment with the larger gap, the face
+// the particle is most clearly in front of). signed_distance is the gap of that segment: < 0 means inside.
 struct ContactPoint {
   int segment = -1;
   SegmentProjection projection;

@@ -5,20 +5,21 @@
 //   [ -A_U           -A_y         0     ] [dl ]   [ c(y, U)                         ]
 //
 // U: plate displacements (K_eff, r_s from PlateSolver::add_newton_system: Newmark-effective solid + cables),
-// y: invader positions, M_p = m 2/dt^2 (constant-acceleration mass participation), lambda: contact forces on the
-// invaders, c: the constraint of contact_constraint.hpp, A = dc/d(U, y), H = -d2(lambda . c).
-// Two ways to solve it (ContactSolver):
+// y: invader positions, M_p = m 2/dt^2 (constant-acceleration mass participation), lambda: contact forces on
+// the invaders, c: the constraint of contact_constraint.hpp, A = dc/d(U, y), H = -d2(lambda . c). Two ways to
+// solve it (ContactSolver):
 //   kCondensed (default): each invader's (dy, dl) block couples only to its segment's 4 plate dofs, so it is
 //     eliminated exactly (a dense 4 x 4 Schur update per invader) and the plate's own Newton system and KSP
-//     ("-structure_" options) solve what remains; dy and dl follow by back-substitution. Same answer, fastest.
+//     ("-structure_" options) solve what remains; dy and dl follow by back-substitution. Same answer,
+//     fastest.
 //   kSaddlePoint: the whole system as one sequential AIJ matrix, fields ordered [plate dofs | invader dofs |
-//     multipliers], KSP prefix "structure_contact_" (default preonly + LU with MUMPS; PCFIELDSPLIT selectable,
-//     with the splits "primal" and "contact"). See docs/coupling.md for the measured costs.
+//     multipliers], KSP prefix "structure_contact_" (default preonly + LU with MUMPS; PCFIELDSPLIT
+//     selectable, with the splits "primal" and "contact"). See docs/coupling.md for the measured costs.
 #pragma once
 
-#include <Eigen/Dense>
 #include <petscksp.h>
 
+#include <Eigen/Dense>
 #include <string>
 #include <vector>
 
@@ -52,7 +53,8 @@ class ContactSystem {
  public:
   // solver: the plate, on this rank (the structure's communicator has one rank in this version).
   ContactSystem(structure::PlateSolver& solver, ContactConstraint form,
-                std::string options_prefix = "structure_contact_", ContactSolver method = ContactSolver::kCondensed);
+                std::string options_prefix = "structure_contact_",
+                ContactSolver method = ContactSolver::kCondensed);
   ContactSystem(const ContactSystem&) = delete;
   ContactSystem& operator=(const ContactSystem&) = delete;
 
@@ -60,8 +62,8 @@ class ContactSystem {
   // participation 2 m / dt^2. `when` names the time in error messages. NumericalError on non-convergence.
   ContactSolveReport solve(const std::vector<ContactInvader>& invaders, double dt, double when);
 
-  // After solve(): final invader positions, contact forces on them (N/m), and the contact forces on the plate's
-  // dofs (2 per node, clamped nodes included: there they are reactions carried by the clamp).
+  // After solve(): final invader positions, contact forces on them (N/m), and the contact forces on the
+  // plate's dofs (2 per node, clamped nodes included: there they are reactions carried by the clamp).
   const std::vector<Eigen::Vector2d>& positions() const { return y_; }
   const std::vector<Eigen::Vector2d>& forces() const { return force_; }
   const Eigen::VectorXd& structure_forces() const { return structure_force_; }
@@ -74,9 +76,9 @@ class ContactSystem {
  private:
   // One invader's share of the Newton system at the current iterate.
   struct LocalContact {
-    PetscInt q[6];               // rows of (y, F, S) in the saddle-point numbering; -1 for clamped plate dofs
+    PetscInt q[6];  // rows of (y, F, S) in the saddle-point numbering; -1 for clamped plate dofs
     ConstraintTerms terms;
-    double participation = 0.0;  // 2 m / dt^2
+    double participation = 0.0;       // 2 m / dt^2
     Eigen::Matrix<double, 6, 1> rhs;  // A^T lambda, minus the particle's inertia on its rows
   };
   LocalContact local_contact(int i, const ContactInvader& inv, double dt);
@@ -85,7 +87,8 @@ class ContactSystem {
   // Assembles the Jacobian and right-hand side at the current iterate; returns (force norm, gap inf-norm).
   std::pair<double, double> assemble(const std::vector<ContactInvader>& invaders, double dt);
   void solve_linear(double when);
-  // The condensed path: assemble into the plate's own system, solve it, back-substitute (contact_condensed.cpp).
+  // The condensed path: assemble into the plate's own system, solve it, back-substitute
+  // (contact_condensed.cpp).
   std::pair<double, double> assemble_condensed(const std::vector<ContactInvader>& invaders, double dt);
   double solve_condensed(double when);  // applies the increments; returns the increment inf-norm
 

@@ -1,7 +1,7 @@
-// The interface between the distributed fluid and the structure's rank (DESIGN.md "One time step", steps 3 and 5):
-// each rank finds its owned particles in the intermediate layer or past the plate's surface, they are gathered to
-// the structure's rank sorted by global id (so the contact solve sees the same list on any number of ranks), and
-// the corrections go back to the owning ranks by (rank, local index).
+// The interface between the distributed fluid and the structure's rank (DESIGN.md "One time step", steps 3
+// and 5): each rank finds its owned particles in the intermediate layer or past the plate's surface, they are
+// gathered to the structure's rank sorted by global id (so the contact solve sees the same list on any number
+// of ranks), and the corrections go back to the owning ranks by (rank, local index).
 #pragma once
 
 #include <mpi.h>
@@ -14,8 +14,8 @@
 
 namespace halfeti::coupling {
 
-// What the coupling reads from the fluid: the owned particles of this rank, after the fluid's prediction to t + dt
-// (views into the fluid's arrays; all of length count).
+// What the coupling reads from the fluid: the owned particles of this rank, after the fluid's prediction to t
+// + dt (views into the fluid's arrays; all of length count).
 struct InterfaceParticles {
   std::size_t count = 0;
   const std::int64_t* gid = nullptr;
@@ -23,8 +23,9 @@ struct InterfaceParticles {
   const double* y = nullptr;
   const double* vx = nullptr;
   const double* vy = nullptr;
-  const double* mass = nullptr;      // kg/m (per unit depth)
-  const double* grad_rho = nullptr;  // renormalised density gradient (eq. 6), 2 per particle (x, y); may be null
+  const double* mass = nullptr;  // kg/m (per unit depth)
+  const double* grad_rho =
+      nullptr;  // renormalised density gradient (eq. 6), 2 per particle (x, y); may be null
 };
 
 // One particle in the contact solve, as gathered on the structure's rank.
@@ -59,10 +60,11 @@ std::vector<Invader> find_local_invaders(const InterfaceParticles& particles, co
 // Collective over comm: every rank's invaders on root, sorted by gid; empty on the other ranks.
 std::vector<Invader> gather_invaders(MPI_Comm comm, int root, const std::vector<Invader>& local);
 
-// Collective over comm: root holds gathered invaders and their corrections (same order); every rank fills `out`
-// for its owned particles (out is reset to particles.count entries), including eq. 24's density correction.
+// Collective over comm: root holds gathered invaders and their corrections (same order); every rank fills
+// `out` for its owned particles (out is reset to particles.count entries), including eq. 24's density
+// correction.
 void scatter_corrections(MPI_Comm comm, int root, const std::vector<Invader>& gathered,
-                         const std::vector<InvaderCorrection>& corrections, const InterfaceParticles& particles,
-                         Corrections& out);
+                         const std::vector<InvaderCorrection>& corrections,
+                         const InterfaceParticles& particles, Corrections& out);
 
 }  // namespace halfeti::coupling

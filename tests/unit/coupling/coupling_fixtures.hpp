@@ -1,4 +1,5 @@
-// Shared set-ups of the coupling tests: the paper's plate (2 x 60 Q9 or coarser) and particles placed against it.
+// Shared set-ups of the coupling tests: the paper's plate (2 x 60 Q9 or coarser) and particles placed against
+// it.
 #pragma once
 
 #include <cmath>

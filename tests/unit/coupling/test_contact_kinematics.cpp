@@ -142,7 +142,8 @@ namespace {
 
 using Vec6 = Eigen::Matrix<double, 6, 1>;
 
-hc::ConstraintTerms at(hc::ContactConstraint form, const Vec6& q, double eta, double target, const Vector2d& lam) {
+hc::ConstraintTerms at(hc::ContactConstraint form, const Vec6& q, double eta, double target,
+                       const Vector2d& lam) {
   return hc::evaluate_constraint(form, q.segment<2>(0), q.segment<2>(2), q.segment<2>(4), eta, target, lam);
 }
 
@@ -160,7 +161,8 @@ void check_against_differences(hc::ContactConstraint form, double target) {
     qm(j) -= h;
     const auto tp = at(form, qp, eta, target, lambda), tm = at(form, qm, eta, target, lambda);
     for (int k = 0; k < terms.rows; ++k)
-      EXPECT_NEAR(terms.gradient(k, j), (tp.value(k) - tm.value(k)) / (2 * h), 1e-8) << "row " << k << " q " << j;
+      EXPECT_NEAR(terms.gradient(k, j), (tp.value(k) - tm.value(k)) / (2 * h), 1e-8)
+          << "row " << k << " q " << j;
     const Vec6 dforce = (hc::contact_forces(tp, lambda) - hc::contact_forces(tm, lambda)) / (2 * h);
     for (int i = 0; i < 6; ++i) EXPECT_NEAR(terms.hessian(i, j), dforce(i), 1e-7) << i << "," << j;
   }
@@ -187,6 +189,7 @@ TEST(ContactConstraint, TiedWithZeroTargetIsTheContactPointItself) {
   const auto t = hc::evaluate_constraint(hc::ContactConstraint::kTied, xp, f, s, 0.25, 0.0, Vector2d::Zero());
   EXPECT_NEAR(t.value.x(), 0.1, 1e-15);  // overlap vector O of eq. 19: particle minus contact point
   EXPECT_NEAR(t.value.y(), 0.0, 1e-15);
-  const auto n = hc::evaluate_constraint(hc::ContactConstraint::kNormal, xp, f, s, 0.0, 0.0, Vector2d::Zero());
+  const auto n =
+      hc::evaluate_constraint(hc::ContactConstraint::kNormal, xp, f, s, 0.0, 0.0, Vector2d::Zero());
   EXPECT_NEAR(n.value(0), 0.1, 1e-15);  // segment (0,0)->(0,2) faces +x: the particle is 0.1 in front of it
 }

@@ -23,7 +23,8 @@ struct Variant {
   std::vector<std::pair<std::string, std::string>> options;  // without the prefix
 };
 
-// Invaders in three columns on each face, entering the layer of L = 0.1 mm (u 0.6 m/s, dt 1.6e-5 s, ratio 10).
+// Invaders in three columns on each face, entering the layer of L = 0.1 mm (u 0.6 m/s, dt 1.6e-5 s, ratio
+// 10).
 std::vector<hc::ContactInvader> paper_invaders(const hs::PlateSolver& s, double layer) {
   std::vector<hc::ContactInvader> out;
   const auto surface = hc::ContactSystem::surface(s);
@@ -33,7 +34,8 @@ std::vector<hc::ContactInvader> paper_invaders(const hs::PlateSolver& s, double 
       for (int col = 0; col < 3; ++col) {
         const double sign = side == 0 ? 1.0 : -1.0;
         hc::ContactInvader inv;
-        inv.predicted = Eigen::Vector2d(sign * (half + layer * (0.2 + 0.3 * col)), 0.0015 * (j + 0.5) + 1e-4 * col);
+        inv.predicted =
+            Eigen::Vector2d(sign * (half + layer * (0.2 + 0.3 * col)), 0.0015 * (j + 0.5) + 1e-4 * col);
         inv.mass = hc::testing::kParticleMass;
         const auto c = hc::closest_segment(surface, inv.predicted);
         inv.segment = c.segment;
@@ -52,17 +54,28 @@ TEST(ContactSolvers, MumpsAgainstFieldSplitAtThePapersSize) {
       {"saddle point, MUMPS LU", hc::ContactSolver::kSaddlePoint, {}},
       {"saddle point, fieldsplit Schur full, selfp; A00 LU, S gmres+lu(Sp)",
        hc::ContactSolver::kSaddlePoint,
-       {{"ksp_type", "fgmres"}, {"ksp_rtol", "1e-12"}, {"pc_type", "fieldsplit"},
-        {"pc_fieldsplit_type", "schur"}, {"pc_fieldsplit_schur_fact_type", "full"},
-        {"pc_fieldsplit_schur_precondition", "selfp"}, {"fieldsplit_primal_ksp_type", "preonly"},
-        {"fieldsplit_primal_pc_type", "lu"}, {"fieldsplit_contact_ksp_type", "gmres"},
-        {"fieldsplit_contact_ksp_rtol", "1e-12"}, {"fieldsplit_contact_pc_type", "lu"}}},
+       {{"ksp_type", "fgmres"},
+        {"ksp_rtol", "1e-12"},
+        {"pc_type", "fieldsplit"},
+        {"pc_fieldsplit_type", "schur"},
+        {"pc_fieldsplit_schur_fact_type", "full"},
+        {"pc_fieldsplit_schur_precondition", "selfp"},
+        {"fieldsplit_primal_ksp_type", "preonly"},
+        {"fieldsplit_primal_pc_type", "lu"},
+        {"fieldsplit_contact_ksp_type", "gmres"},
+        {"fieldsplit_contact_ksp_rtol", "1e-12"},
+        {"fieldsplit_contact_pc_type", "lu"}}},
       {"saddle point, fieldsplit Schur upper, selfp; A00 LU, S preonly lu(Sp)",
        hc::ContactSolver::kSaddlePoint,
-       {{"ksp_type", "fgmres"}, {"ksp_rtol", "1e-12"}, {"pc_type", "fieldsplit"},
-        {"pc_fieldsplit_type", "schur"}, {"pc_fieldsplit_schur_fact_type", "upper"},
-        {"pc_fieldsplit_schur_precondition", "selfp"}, {"fieldsplit_primal_ksp_type", "preonly"},
-        {"fieldsplit_primal_pc_type", "lu"}, {"fieldsplit_contact_ksp_type", "preonly"},
+       {{"ksp_type", "fgmres"},
+        {"ksp_rtol", "1e-12"},
+        {"pc_type", "fieldsplit"},
+        {"pc_fieldsplit_type", "schur"},
+        {"pc_fieldsplit_schur_fact_type", "upper"},
+        {"pc_fieldsplit_schur_precondition", "selfp"},
+        {"fieldsplit_primal_ksp_type", "preonly"},
+        {"fieldsplit_primal_pc_type", "lu"},
+        {"fieldsplit_contact_ksp_type", "preonly"},
         {"fieldsplit_contact_pc_type", "lu"}}},
   };
   const double dt = 1.6e-5, layer = 10 * 0.6 * dt;
@@ -83,11 +96,12 @@ TEST(ContactSolvers, MumpsAgainstFieldSplitAtThePapersSize) {
       s.end_step();
     }
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("  %-62s %zu invaders, %d dofs: %.2f ms/step, solve %.2f ms/iteration, assembly %.2f ms/iteration "
-                "(%d Newton iterations in %d steps, setup %.2f ms/step)\n",
-                variants[v].name.c_str(), inv.size(), s.dof_count(), 1e3 * total / steps,
-                1e3 * sys.timers().seconds("solve") / iterations, 1e3 * sys.timers().seconds("assembly") / iterations,
-                iterations, steps, 1e3 * sys.timers().seconds("setup") / steps);
+    std::printf(
+        "  %-62s %zu invaders, %d dofs: %.2f ms/step, solve %.2f ms/iteration, assembly %.2f ms/iteration "
+        "(%d Newton iterations in %d steps, setup %.2f ms/step)\n",
+        variants[v].name.c_str(), inv.size(), s.dof_count(), 1e3 * total / steps,
+        1e3 * sys.timers().seconds("solve") / iterations, 1e3 * sys.timers().seconds("assembly") / iterations,
+        iterations, steps, 1e3 * sys.timers().seconds("setup") / steps);
     results.push_back(s.displacement());
   }
   // Plate alone for scale: its own LU (RCM) solve.
@@ -103,5 +117,6 @@ TEST(ContactSolvers, MumpsAgainstFieldSplitAtThePapersSize) {
   }
   PetscOptionsClear(nullptr);
   for (std::size_t v = 1; v < results.size(); ++v)
-    EXPECT_LT((results[v] - results[0]).lpNorm<Eigen::Infinity>(), 1e-8 * results[0].lpNorm<Eigen::Infinity>());
+    EXPECT_LT((results[v] - results[0]).lpNorm<Eigen::Infinity>(),
+              1e-8 * results[0].lpNorm<Eigen::Infinity>());
 }

@@ -1,5 +1,6 @@
-// The coupled step across ranks: the same invaders in global id order and bitwise the same corrections whatever
-// the decomposition (np 1-4), against a reference computed on one rank in the same run; collective errors.
+// The coupled step across ranks: the same invaders in global id order and bitwise the same corrections
+// whatever the decomposition (np 1-4), against a reference computed on one rank in the same run; collective
+// errors.
 #include <gtest/gtest.h>
 #include <mpi.h>
 #include <petscsys.h>
@@ -45,8 +46,9 @@ struct Cloud {
   }
 };
 
-// Columns of water on both sides of the 3 mm plate: some past the faces, some in the SSOSD layer, most outside,
-// all moving towards the plate. Particle g goes to rank (7 g) % size, stored in descending gid order.
+// Columns of water on both sides of the 3 mm plate: some past the faces, some in the SSOSD layer, most
+// outside, all moving towards the plate. Particle g goes to rank (7 g) % size, stored in descending gid
+// order.
 Cloud make_cloud(int rank, int size) {
   Cloud c;
   const double half = 1.5e-3, dx = hc::testing::kSpacing;
@@ -102,15 +104,15 @@ std::map<std::int64_t, Record> run(MPI_Comm comm, int steps, std::vector<int>* i
     if (invaders) invaders->push_back(report.invaders);
     if (std::getenv("HALFETI_DEBUG") && rank == 0)
       std::printf("step %d: %d invaders, L = %.3e m, u_max %.3f, F = (%.3e, %.3e), max %.3e, newton %d\n", n,
-                  report.invaders, report.layer, report.u_max, report.force_x, report.force_y, report.max_force,
-                  report.newton_iterations);
+                  report.invaders, report.layer, report.u_max, report.force_x, report.force_y,
+                  report.max_force, report.newton_iterations);
     if (n + 1 < steps) cloud.apply(corr, dt);
   }
   // Gather records (gid + 7 doubles) to rank 0.
   std::vector<double> mine;
   for (std::size_t i = 0; i < cloud.gid.size(); ++i)
-    mine.insert(mine.end(), {static_cast<double>(cloud.gid[i]), corr.dx[i], corr.dy[i], corr.dvx[i], corr.dvy[i],
-                             corr.drho[i], cloud.x[i] + corr.dx[i], cloud.y[i] + corr.dy[i]});
+    mine.insert(mine.end(), {static_cast<double>(cloud.gid[i]), corr.dx[i], corr.dy[i], corr.dvx[i],
+                             corr.dvy[i], corr.drho[i], cloud.x[i] + corr.dx[i], cloud.y[i] + corr.dy[i]});
   int count = static_cast<int>(mine.size());
   std::vector<int> counts(size), displs(size);
   MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
