@@ -20,9 +20,12 @@ Eigen::Matrix3d full_3d(const Eigen::Matrix2d& in_plane, double out_of_plane) {
   return full;
 }
 
-Eigen::Vector4d to_voigt(const Eigen::Matrix3d& s) { return {s(0, 0), s(1, 1), s(0, 1), s(2, 2)}; }
+Eigen::Vector4d to_voigt(const Eigen::Matrix3d& s) {
+  return {s(0, 0), s(1, 1), s(0, 1), s(2, 2)};
+}
 
-// D(p, q) = a A_IJ A_KL + b (B_IK B_JL + B_IL B_JK) for symmetric 3x3 A, B: the two shapes every tangent below has.
+// D(p, q) = a A_IJ A_KL + b (B_IK B_JL + B_IL B_JK) for symmetric 3x3 A, B: the two shapes every tangent
+// below has.
 Eigen::Matrix4d tensor_tangent(double a, const Eigen::Matrix3d& A, double b, const Eigen::Matrix3d& B) {
   Eigen::Matrix4d d;
   for (int p = 0; p < 4; ++p)
@@ -46,11 +49,12 @@ Material::Material(double youngs_modulus, double poisson_ratio)
 }
 
 MaterialResponse NeoHookean::evaluate(const Eigen::Matrix2d& e, double e33, EnergyPart part) const {
-  // det C = det(I + 2E) = (1 + 2 tr e + 4 det e)(1 + 2 e33) in 2D + 1: taken through log1p, ln J keeps its digits.
+  // det C = det(I + 2E) = (1 + 2 tr e + 4 det e)(1 + 2 e33) in 2D + 1: taken through log1p, ln J keeps its
+  // digits.
   const double det_in_plane_minus_one = 2.0 * e.trace() + 4.0 * e.determinant();
   if (!(det_in_plane_minus_one > -1.0) || !(e33 > -0.5))
-    HALFETI_NUMERICAL_ERROR("Neo-Hookean point inverted: det C <= 0 (E = [" << e(0, 0) << ", " << e(1, 1) << ", "
-                                                                           << e(0, 1) << "], E33 = " << e33 << ")");
+    HALFETI_NUMERICAL_ERROR("Neo-Hookean point inverted: det C <= 0 (E = ["
+                            << e(0, 0) << ", " << e(1, 1) << ", " << e(0, 1) << "], E33 = " << e33 << ")");
   const double log_j = 0.5 * (std::log1p(det_in_plane_minus_one) + std::log1p(2.0 * e33));
   const Eigen::Matrix3d strain = full_3d(e, e33);
   const Eigen::Matrix3d c_inv = (Eigen::Matrix3d::Identity() + 2.0 * strain).inverse();
@@ -93,13 +97,15 @@ std::unique_ptr<Material> make_material(MaterialModel model, double youngs_modul
 MaterialModel parse_material_model(const std::string& name) {
   if (name == "neo_hookean") return MaterialModel::kNeoHookean;
   if (name == "st_venant_kirchhoff") return MaterialModel::kStVenantKirchhoff;
-  HALFETI_USER_ERROR("structure.material.model: unknown '" << name << "' (known: neo_hookean, st_venant_kirchhoff)");
+  HALFETI_USER_ERROR("structure.material.model: unknown '" << name
+                                                           << "' (known: neo_hookean, st_venant_kirchhoff)");
 }
 
 PlaneHypothesis parse_plane_hypothesis(const std::string& name) {
   if (name == "plane_strain") return PlaneHypothesis::kPlaneStrain;
   if (name == "plane_stress") return PlaneHypothesis::kPlaneStress;
-  HALFETI_USER_ERROR("structure.material.hypothesis: unknown '" << name << "' (known: plane_strain, plane_stress)");
+  HALFETI_USER_ERROR("structure.material.hypothesis: unknown '" << name
+                                                                << "' (known: plane_strain, plane_stress)");
 }
 
 std::string to_string(MaterialModel model) {
@@ -119,15 +125,16 @@ PlaneResponse plane_response(const Material& material, const Eigen::Matrix2d& e,
     r = material.evaluate(e, 0.0, part);
     out.tangent = r.tangent.topLeftCorner<3, 3>();
   } else {
-    HALFETI_CHECK(part == EnergyPart::kAll, "plane stress has no volumetric locking: integrate the whole energy");
+    HALFETI_CHECK(part == EnergyPart::kAll,
+                  "plane stress has no volumetric locking: integrate the whole energy");
     // Newton on S33(E33) = 0, dS33/dE33 = D33, from E33 = 0.
     const double scale = material.mu() + material.lambda();
     for (int it = 0;; ++it) {
       r = material.evaluate(e, e33, part);
       if (std::abs(r.stress(3)) <= 1e-13 * scale * std::max(1.0, e.norm())) break;
       if (it == 50)
-        HALFETI_NUMERICAL_ERROR("plane stress: S33 = 0 not reached at E33 = " << e33 << " (S33 = " << r.stress(3)
-                                                                              << " Pa)");
+        HALFETI_NUMERICAL_ERROR(
+            "plane stress: S33 = 0 not reached at E33 = " << e33 << " (S33 = " << r.stress(3) << " Pa)");
       const double next = e33 - r.stress(3) / r.tangent(3, 3);
       e33 = next > -0.5 ? next : 0.5 * (e33 - 0.5);  // keep C33 = 1 + 2 E33 positive
     }
@@ -141,7 +148,9 @@ PlaneResponse plane_response(const Material& material, const Eigen::Matrix2d& e,
   return out;
 }
 
-Eigen::Matrix2d green_lagrange(const Eigen::Matrix2d& h) { return 0.5 * (h + h.transpose() + h.transpose() * h); }
+Eigen::Matrix2d green_lagrange(const Eigen::Matrix2d& h) {
+  return 0.5 * (h + h.transpose() + h.transpose() * h);
+}
 
 Eigen::Vector4d cauchy_stress(const Eigen::Matrix2d& f, double f33, const Eigen::Vector4d& s) {
   Eigen::Matrix2d s2;

@@ -57,8 +57,8 @@ void PlateSolver::build_matrix() {
 
 void PlateSolver::compute_external(double t) {
   time_ = t;
-  // Gravity and the tank frame's inertial force -a_g(t) (DESIGN, "The tank frame"), lumped through M's row sums:
-  // for a uniform acceleration field b, the consistent nodal force M b equals (row sum of M) b exactly.
+  // Gravity and the tank frame's inertial force -a_g(t) (DESIGN, "The tank frame"), lumped through M's row
+  // sums: for a uniform acceleration field b, the consistent nodal force M b equals (row sum of M) b exactly.
   Eigen::Vector2d body = params_.gravity;
   if (ground_ != nullptr) body.x() -= ground_->acceleration(t);
   for (int n = 0; n < node_count(); ++n) body_forces_.segment<2>(2 * n) = mass_row_sum_(n) * body;
@@ -100,7 +100,8 @@ void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& n
       }
     } catch (const NumericalError& error) {
       const Eigen::Vector2d centre = position(nodes[4]);
-      HALFETI_NUMERICAL_ERROR(error.what() << " in element " << e << " at (" << centre.x() << ", " << centre.y()
+      HALFETI_NUMERICAL_ERROR(error.what()
+                              << " in element " << e << " at (" << centre.x() << ", " << centre.y()
                               << ") m, t = " << time_ << " s; hint: smaller dt, or check the loads");
     }
     const auto& m = mass_[e];
@@ -172,13 +173,15 @@ void PlateSolver::add_newton_system(Mat matrix, Vec rhs, PetscInt offset) {
       HALFETI_PETSC_CALL(MatSetValuesBlocked(matrix, kQ9Nodes, rows, kQ9Nodes, rows, values, ADD_VALUES));
     } else {
       for (int a = 0; a < kQ9Nodes; ++a)
-        for (int c = 0; c < 2; ++c) rows[2 * a + c] = clamped_[nodes[a]] ? -1 : 2 * to_petsc[nodes[a]] + c + offset;
+        for (int c = 0; c < 2; ++c)
+          rows[2 * a + c] = clamped_[nodes[a]] ? -1 : 2 * to_petsc[nodes[a]] + c + offset;
       HALFETI_PETSC_CALL(MatSetValues(matrix, kQ9Dofs, rows, kQ9Dofs, rows, values, ADD_VALUES));
     }
   };
   auto nodal_sink = [&](const std::vector<int>& dofs, const double* values) {
     std::vector<PetscInt> idx(dofs.size());
-    for (std::size_t i = 0; i < dofs.size(); ++i) idx[i] = dofs[i] < 0 ? -1 : petsc_dof(dofs[i] / 2, dofs[i] % 2) + offset;
+    for (std::size_t i = 0; i < dofs.size(); ++i)
+      idx[i] = dofs[i] < 0 ? -1 : petsc_dof(dofs[i] / 2, dofs[i] % 2) + offset;
     const PetscInt k = static_cast<PetscInt>(idx.size());
     HALFETI_PETSC_CALL(MatSetValues(matrix, k, idx.data(), k, idx.data(), values, ADD_VALUES));
   };
@@ -194,8 +197,10 @@ void PlateSolver::add_newton_system(Mat matrix, Vec rhs, PetscInt offset) {
     std::vector<double> values;
     for (int n = 0; n < node_count(); ++n)
       if (partition_.node_rank[n] == rank_)
-        for (int c = 0; c < 2; ++c) idx.push_back(petsc_dof(n, c) + offset), values.push_back(residual_(2 * n + c));
-    HALFETI_PETSC_CALL(VecSetValues(rhs, static_cast<PetscInt>(idx.size()), idx.data(), values.data(), ADD_VALUES));
+        for (int c = 0; c < 2; ++c)
+          idx.push_back(petsc_dof(n, c) + offset), values.push_back(residual_(2 * n + c));
+    HALFETI_PETSC_CALL(
+        VecSetValues(rhs, static_cast<PetscInt>(idx.size()), idx.data(), values.data(), ADD_VALUES));
   }
 }
 
@@ -203,7 +208,8 @@ void PlateSolver::build_scatter_map() {
   element_scatter_.clear();
   clamped_diagonal_.clear();
   PetscBool is_seqaij = PETSC_FALSE;
-  HALFETI_PETSC_CALL(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(matrix_.get()), MATSEQAIJ, &is_seqaij));
+  HALFETI_PETSC_CALL(
+      PetscObjectTypeCompare(reinterpret_cast<PetscObject>(matrix_.get()), MATSEQAIJ, &is_seqaij));
   if (!is_seqaij) return;
   // Fix the pattern with one pass of the general path, then look every entry up once.
   mode_ = Mode::kStatic;
@@ -219,7 +225,8 @@ void PlateSolver::build_scatter_map() {
   HALFETI_CHECK(done, "MatGetRowIJ did not return the SeqAIJ structure");
   auto position = [&](PetscInt row, PetscInt col) {
     const PetscInt* hit = std::lower_bound(ja + ia[row], ja + ia[row + 1], col);
-    HALFETI_CHECK(hit != ja + ia[row + 1] && *hit == col, "entry (" << row << ", " << col << ") not in pattern");
+    HALFETI_CHECK(hit != ja + ia[row + 1] && *hit == col,
+                  "entry (" << row << ", " << col << ") not in pattern");
     return static_cast<PetscInt>(hit - ja);
   };
   element_scatter_.reserve(mesh_.elements.size() * kQ9Dofs * kQ9Dofs);
@@ -228,7 +235,7 @@ void PlateSolver::build_scatter_map() {
       for (int c = 0; c < kQ9Dofs; ++c) {
         const int rn = nodes[r / 2], cn = nodes[c / 2];
         element_scatter_.push_back(clamped_[rn] || clamped_[cn] ? -1
-                                                                 : position(2 * rn + r % 2, 2 * cn + c % 2));
+                                                                : position(2 * rn + r % 2, 2 * cn + c % 2));
       }
   for (int node : mesh_.clamped_nodes)
     for (int c = 0; c < 2; ++c) clamped_diagonal_.push_back(position(2 * node + c, 2 * node + c));

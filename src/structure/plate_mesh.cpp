@@ -41,9 +41,9 @@ PlateMesh make_plate_mesh(const PlateGeometry& geo) {
       mesh.elements.push_back(e);
     }
   for (int i = 0; i < nx; ++i) mesh.clamped_nodes.push_back(id(i, 0));
-  mesh.named_nodes = {{"base_left", id(0, 0)},          {"base_centre", id(nx / 2, 0)},
-                      {"base_right", id(nx - 1, 0)},    {"top_left", id(0, ny - 1)},
-                      {"top_centre", id(nx / 2, ny - 1)}, {"top_right", id(nx - 1, ny - 1)}};
+  mesh.named_nodes = {
+      {"base_left", id(0, 0)},     {"base_centre", id(nx / 2, 0)},     {"base_right", id(nx - 1, 0)},
+      {"top_left", id(0, ny - 1)}, {"top_centre", id(nx / 2, ny - 1)}, {"top_right", id(nx - 1, ny - 1)}};
 
   auto& left = mesh.edge_sets["left"];
   auto& right = mesh.edge_sets["right"];

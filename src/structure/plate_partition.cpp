@@ -31,8 +31,9 @@ PlatePartition partition_plate(const PlateMesh& mesh, MPI_Comm comm) {
       idx_t options[METIS_NOPTIONS];
       METIS_SetDefaultOptions(options);
       options[METIS_OPTION_SEED] = 1;  // reproducible partitions
-      const int status = METIS_PartMeshDual(&n_elements, &n_nodes, eptr.data(), eind.data(), nullptr, nullptr,
-                                            &common, &parts, nullptr, options, &cut, epart.data(), npart.data());
+      const int status =
+          METIS_PartMeshDual(&n_elements, &n_nodes, eptr.data(), eind.data(), nullptr, nullptr, &common,
+                             &parts, nullptr, options, &cut, epart.data(), npart.data());
       HALFETI_CHECK(status == METIS_OK, "METIS_PartMeshDual failed with status " << status);
       for (int e = 0; e < ne; ++e) p.element_rank[e] = static_cast<int>(epart[e]);
     }
@@ -48,7 +49,8 @@ PlatePartition partition_plate(const PlateMesh& mesh, MPI_Comm comm) {
   for (int k = 0; k < nn; ++k) p.petsc_node[order[k]] = k;
   for (int e = 0; e < ne; ++e)
     if (p.element_rank[e] == rank) p.owned_elements.push_back(e);
-  p.first_block = static_cast<int>(std::count_if(p.node_rank.begin(), p.node_rank.end(), [rank](int r) { return r < rank; }));
+  p.first_block = static_cast<int>(
+      std::count_if(p.node_rank.begin(), p.node_rank.end(), [rank](int r) { return r < rank; }));
   p.owned_blocks = static_cast<int>(std::count(p.node_rank.begin(), p.node_rank.end(), rank));
   HALFETI_CHECK(p.owned_blocks > 0, "rank " << rank << " owns no structure node");
   return p;

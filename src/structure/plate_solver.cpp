@@ -11,25 +11,31 @@ namespace halfeti::structure {
 
 void validate(const StructureParameters& p) {
   const auto& m = p.material;
-  if (!(m.density > 0.0)) HALFETI_USER_ERROR("structure.material.density = " << m.density << " kg/m^3 must be > 0");
+  if (!(m.density > 0.0))
+    HALFETI_USER_ERROR("structure.material.density = " << m.density << " kg/m^3 must be > 0");
   if (!(p.newmark.beta > 0.0 && p.newmark.beta <= 0.5))
     HALFETI_USER_ERROR("structure.newmark.beta = " << p.newmark.beta << " must lie in (0, 0.5]");
   if (!(p.newmark.gamma >= 0.5 && p.newmark.gamma <= 1.0))
     HALFETI_USER_ERROR("structure.newmark.gamma = " << p.newmark.gamma << " must lie in [0.5, 1]");
   if (p.newmark.beta < 0.25 * (p.newmark.gamma + 0.5) * (p.newmark.gamma + 0.5) - 1e-14)
-    HALFETI_USER_ERROR("structure.newmark: beta = " << p.newmark.beta << " < (gamma + 1/2)^2 / 4 is only "
-                       "conditionally stable; use beta >= " << 0.25 * (p.newmark.gamma + 0.5) * (p.newmark.gamma + 0.5));
+    HALFETI_USER_ERROR("structure.newmark: beta = "
+                       << p.newmark.beta
+                       << " < (gamma + 1/2)^2 / 4 is only "
+                          "conditionally stable; use beta >= "
+                       << 0.25 * (p.newmark.gamma + 0.5) * (p.newmark.gamma + 0.5));
   if (p.newton.max_iterations < 1)
     HALFETI_USER_ERROR("structure.newton.max_iterations = " << p.newton.max_iterations << " must be >= 1");
   if (!(p.newton.residual_rtol > 0.0 && p.newton.residual_rtol < 1.0))
-    HALFETI_USER_ERROR("structure.newton.residual_rtol = " << p.newton.residual_rtol << " must lie in (0, 1)");
+    HALFETI_USER_ERROR("structure.newton.residual_rtol = " << p.newton.residual_rtol
+                                                           << " must lie in (0, 1)");
   if (!(p.newton.residual_atol >= 0.0))
     HALFETI_USER_ERROR("structure.newton.residual_atol = " << p.newton.residual_atol << " must be >= 0");
   if (!(p.newton.increment_rtol > 0.0))
     HALFETI_USER_ERROR("structure.newton.increment_rtol = " << p.newton.increment_rtol << " must be > 0");
 }
 
-PlateSolver::PlateSolver(MPI_Comm comm, const StructureParameters& params, const excitation::GroundMotion* ground)
+PlateSolver::PlateSolver(MPI_Comm comm, const StructureParameters& params,
+                         const excitation::GroundMotion* ground)
     : comm_(comm), params_(params), ground_(ground) {
   validate(params_);
   rank_ = comm_.rank();
@@ -38,7 +44,8 @@ PlateSolver::PlateSolver(MPI_Comm comm, const StructureParameters& params, const
   partition_ = partition_plate(mesh_, comm_.get());
   const auto& m = params_.material;
   material_ = make_material(m.model, m.youngs_modulus, m.poisson_ratio);
-  integrator_ = std::make_unique<HyperelasticQ9>(*material_, Q9Options{m.hypothesis, m.selective_reduced_integration});
+  integrator_ =
+      std::make_unique<HyperelasticQ9>(*material_, Q9Options{m.hypothesis, m.selective_reduced_integration});
 
   const int n = node_count();
   clamped_.assign(n, false);
@@ -52,8 +59,8 @@ PlateSolver::PlateSolver(MPI_Comm comm, const StructureParameters& params, const
     const Eigen::Matrix<double, kQ9Nodes, 1> rows = mass_.back().rowwise().sum();
     for (int a = 0; a < kQ9Nodes; ++a) mass_row_sum_(e[a]) += rows(a);
   }
-  for (auto* v : {&prescribed_loads_, &external_forces_, &body_forces_, &residual_, &u_, &v_, &a_, &u_n_, &v_n_,
-                  &a_n_})
+  for (auto* v :
+       {&prescribed_loads_, &external_forces_, &body_forces_, &residual_, &u_, &v_, &a_, &u_n_, &v_n_, &a_n_})
     *v = Eigen::VectorXd::Zero(dof_count());
 
   // Direct LU by default (small banded systems); -structure_ksp_type / -structure_pc_type override.
@@ -63,8 +70,8 @@ PlateSolver::PlateSolver(MPI_Comm comm, const StructureParameters& params, const
   PC pc = nullptr;
   HALFETI_PETSC_CALL(KSPGetPC(ksp_.get(), &pc));
   HALFETI_PETSC_CALL(PCSetType(pc, PCLU));
-  // Reverse Cuthill-McKee keeps the LU factors of the banded plate narrow: measured fastest of nd, rcm, natural
-  // and qmd for the 2 x 60 plate (docs/structure.md).
+  // Reverse Cuthill-McKee keeps the LU factors of the banded plate narrow: measured fastest of nd, rcm,
+  // natural and qmd for the 2 x 60 plate (docs/structure.md).
   HALFETI_PETSC_CALL(PCFactorSetMatOrderingType(pc, MATORDERINGRCM));
   // PETSc's own LU is sequential; on several ranks the default direct solver is MUMPS.
   if (size_ > 1) HALFETI_PETSC_CALL(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
@@ -98,7 +105,9 @@ void PlateSolver::add_edge_load(const std::string& edge_set, const Eigen::Vector
   }
 }
 
-void PlateSolver::clear_loads() { prescribed_loads_.setZero(); }
+void PlateSolver::clear_loads() {
+  prescribed_loads_.setZero();
+}
 
 void PlateSolver::set_state(const Eigen::VectorXd& displacement, const Eigen::VectorXd& velocity) {
   HALFETI_CHECK(displacement.size() == dof_count() && velocity.size() == dof_count(), "state of wrong size");
@@ -123,8 +132,9 @@ std::string PlateSolver::summary() const {
      << g.cells_along << " Q9 (" << mesh_.elements.size() << " elements, " << dof_count() << " dofs), "
      << to_string(m.model) << " E = " << m.youngs_modulus << " Pa, nu = " << m.poisson_ratio
      << ", rho = " << m.density << " kg/m^3, " << to_string(m.hypothesis) << " per unit depth, "
-     << (m.selective_reduced_integration ? "selective reduced" : "full") << " integration, Newmark beta = "
-     << params_.newmark.beta << " gamma = " << params_.newmark.gamma << ", ranks = " << size_;
+     << (m.selective_reduced_integration ? "selective reduced" : "full")
+     << " integration, Newmark beta = " << params_.newmark.beta << " gamma = " << params_.newmark.gamma
+     << ", ranks = " << size_;
   return os.str();
 }
 
@@ -176,7 +186,8 @@ Vec PlateSolver::solve_newton_increment() {
       detail = std::string(" (preconditioner: ") + PCFailedReasons[pc_reason] + ")";
     }
     HALFETI_NUMERICAL_ERROR("structure: KSP solve failed at t = " << time_ << " s, reason "
-                            << KSPConvergedReasons[reason] << detail << "; try -structure_pc_type lu");
+                                                                  << KSPConvergedReasons[reason] << detail
+                                                                  << "; try -structure_pc_type lu");
   }
   return solution_.get();
 }
@@ -236,7 +247,8 @@ double PlateSolver::sum_over_ranks(double local) const {
 bool PlateSolver::converged() const {
   const auto& nt = params_.newton;
   const bool residual_small = residual_norm_ <= std::max(nt.residual_atol, nt.residual_rtol * force_scale_);
-  const bool increment_small = increment_norm_ >= 0.0 && increment_norm_ <= nt.increment_rtol * params_.geometry.height;
+  const bool increment_small =
+      increment_norm_ >= 0.0 && increment_norm_ <= nt.increment_rtol * params_.geometry.height;
   return residual_small || increment_small;
 }
 
@@ -256,8 +268,9 @@ void newton_loop(Solver& s, int max_iterations, double t, const char* what) {
     s.assemble_newton_system();
     if (s.converged()) return;
     if (s.last_step().newton_iterations >= max_iterations)
-      HALFETI_NUMERICAL_ERROR("structure: Newton did not converge in " << max_iterations << " iterations ("
-                              << what << " at t = " << t << " s): ||r|| = " << s.residual_norm()
+      HALFETI_NUMERICAL_ERROR("structure: Newton did not converge in "
+                              << max_iterations << " iterations (" << what << " at t = " << t
+                              << " s): ||r|| = " << s.residual_norm()
                               << " N/m, last ||du||_inf = " << s.last_step().increment_norm << " m");
     s.apply_increment(s.solve_newton_increment());
     if (s.converged()) return;
@@ -273,7 +286,8 @@ StepReport PlateSolver::step(double t, double dt) {
 }
 
 StepReport PlateSolver::solve_static(double t, int load_increments) {
-  if (load_increments < 1) HALFETI_USER_ERROR("structure: load_increments " << load_increments << " must be >= 1");
+  if (load_increments < 1)
+    HALFETI_USER_ERROR("structure: load_increments " << load_increments << " must be >= 1");
   StepReport total;
   for (int k = 1; k <= load_increments; ++k) {
     begin_static(t);
@@ -308,14 +322,16 @@ double PlateSolver::kinetic_energy() const {
 double PlateSolver::element_von_mises(int element) const {
   HALFETI_CHECK(element >= 0 && element < static_cast<int>(mesh_.elements.size()), "no element " << element);
   double sum = 0.0;
-  for (const auto& s : integrator_->cauchy_at_points(geometry_[element], element_displacement(element))) sum += von_mises(s);
+  for (const auto& s : integrator_->cauchy_at_points(geometry_[element], element_displacement(element)))
+    sum += von_mises(s);
   return sum / 9.0;
 }
 
 double PlateSolver::max_von_mises() const {
   double m = 0.0;
   for (int k : partition_.owned_elements)
-    for (const auto& s : integrator_->cauchy_at_points(geometry_[k], element_displacement(k))) m = std::max(m, von_mises(s));
+    for (const auto& s : integrator_->cauchy_at_points(geometry_[k], element_displacement(k)))
+      m = std::max(m, von_mises(s));
   double global = m;
   if (size_ > 1) MPI_Allreduce(&m, &global, 1, MPI_DOUBLE, MPI_MAX, comm_.get());
   return global;

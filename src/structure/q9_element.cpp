@@ -59,7 +59,8 @@ Q9Geometry HyperelasticQ9::reference_geometry(const Q9Coordinates& reference) {
       g.area += g.full[i + 3 * j].weight;
     }
   for (int j = 0; j < 2; ++j)
-    for (int i = 0; i < 2; ++i) g.reduced[i + 2 * j] = reference_point(reference, kGauss2[i], kGauss2[j], 1.0);
+    for (int i = 0; i < 2; ++i)
+      g.reduced[i + 2 * j] = reference_point(reference, kGauss2[i], kGauss2[j], 1.0);
   return g;
 }
 
@@ -75,7 +76,7 @@ void HyperelasticQ9::accumulate(const Q9Point& p, const Q9Coordinates& u, Energy
   const Eigen::Matrix2d f = Eigen::Matrix2d::Identity() + h;
   if (!(f.determinant() > 0.0))
     HALFETI_NUMERICAL_ERROR("structure: inverted element point (det F = " << f.determinant()
-                                                                           << " <= 0): deformation too large");
+                                                                          << " <= 0): deformation too large");
   const PlaneResponse r = plane_response(material_, green_lagrange(h), options_.hypothesis, part);
   Eigen::Matrix2d s;
   s << r.stress(0), r.stress(2), r.stress(2), r.stress(1);
@@ -99,7 +100,8 @@ void HyperelasticQ9::accumulate(const Q9Point& p, const Q9Coordinates& u, Energy
         for (int ll = 0; ll < 2; ++ll) {
           double sum = i == k ? s(jj, ll) : 0.0;
           for (int ii = 0; ii < 2; ++ii)
-            for (int kk = 0; kk < 2; ++kk) sum += f(i, ii) * f(k, kk) * r.tangent(kVoigt[ii][jj], kVoigt[kk][ll]);
+            for (int kk = 0; kk < 2; ++kk)
+              sum += f(i, ii) * f(k, kk) * r.tangent(kVoigt[ii][jj], kVoigt[kk][ll]);
           a4(2 * i + jj, 2 * k + ll) = w * sum;
         }
   for (int i = 0; i < 2; ++i)
@@ -167,7 +169,8 @@ Eigen::Matrix<double, kQ9Nodes, kQ9Nodes> HyperelasticQ9::scalar_mass(const Q9Ge
   return m;
 }
 
-std::array<Eigen::Vector4d, 9> HyperelasticQ9::cauchy_at_points(const Q9Geometry& g, const Q9Coordinates& u) const {
+std::array<Eigen::Vector4d, 9> HyperelasticQ9::cauchy_at_points(const Q9Geometry& g,
+                                                                const Q9Coordinates& u) const {
   std::array<Eigen::Vector4d, 9> out;
   for (int q = 0; q < 9; ++q) {
     const Eigen::Matrix2d h = displacement_gradient(u, g.full[q].gradient);

@@ -1,16 +1,15 @@
-// Hyperelastic materials at a point (the first of the three MFEM-style layers: material -> element integrator ->
-// global assembly). A material gives the strain energy density W, the second Piola-Kirchhoff stress S and the
-// material tangent D = dS/dE at a Green-Lagrange strain E = (C - I)/2 that has an in-plane 2x2 block and an
-// out-of-plane component E33 (no out-of-plane shear: the plate is 2D, per unit depth). The input is E, not C:
-// at the strains of a vibrating plate (1e-6) C - I and ln J computed from C lose ten digits, and lambda ln J
-// (lambda = 3e7 Pa for nu = 0.45) would put a round-off floor under the Newton residual.
+// Hyperelastic materials at a point (the first of the three MFEM-style layers: material -> element integrator
+// -> global assembly). A material gives the strain energy density W, the second Piola-Kirchhoff stress S and
+// the material tangent D = dS/dE at a Green-Lagrange strain E = (C - I)/2 that has an in-plane 2x2 block and
+// an out-of-plane component E33 (no out-of-plane shear: the plate is 2D, per unit depth). The input is E, not
+// C: at the strains of a vibrating plate (1e-6) C - I and ln J computed from C lose ten digits, and lambda ln
+// J (lambda = 3e7 Pa for nu = 0.45) would put a round-off floor under the Newton residual.
 //
-// Voigt order everywhere: [11, 22, 12, 33]; strains with engineering shear, E_v = [E11, E22, 2 E12, E33], so that
-// dS_v = D dE_v with D symmetric.
+// Voigt order everywhere: [11, 22, 12, 33]; strains with engineering shear, E_v = [E11, E22, 2 E12, E33], so
+// that dS_v = D dE_v with D symmetric.
 #pragma once
 
 #include <Eigen/Dense>
-
 #include <memory>
 #include <string>
 
@@ -27,9 +26,9 @@ enum class PlaneHypothesis {
 enum class EnergyPart { kAll, kShear, kBulk };
 
 struct MaterialResponse {
-  double energy = 0.0;               // W per unit reference volume [J/m^3]
-  Eigen::Vector4d stress;            // S in Voigt [11, 22, 12, 33] [Pa]
-  Eigen::Matrix4d tangent;           // D = dS/dE_v [Pa]
+  double energy = 0.0;      // W per unit reference volume [J/m^3]
+  Eigen::Vector4d stress;   // S in Voigt [11, 22, 12, 33] [Pa]
+  Eigen::Matrix4d tangent;  // D = dS/dE_v [Pa]
 };
 
 class Material {
@@ -60,8 +59,8 @@ class NeoHookean final : public Material {
   MaterialResponse evaluate(const Eigen::Matrix2d& e, double e33, EnergyPart part) const override;
 };
 
-// St. Venant-Kirchhoff: W = lambda/2 (tr E)^2 + mu E:E,  S = lambda tr E I + 2 mu E. Fine for moderate strains;
-// unstable in strong compression (it softens), which is why Neo-Hookean is the default.
+// St. Venant-Kirchhoff: W = lambda/2 (tr E)^2 + mu E:E,  S = lambda tr E I + 2 mu E. Fine for moderate
+// strains; unstable in strong compression (it softens), which is why Neo-Hookean is the default.
 class StVenantKirchhoff final : public Material {
  public:
   using Material::Material;
@@ -80,14 +79,14 @@ std::string to_string(MaterialModel model);
 std::string to_string(PlaneHypothesis hypothesis);
 
 // The in-plane response the element uses: S and D in Voigt [11, 22, 12] (engineering shear), energy, and the
-// out-of-plane state. Plane strain takes E33 = 0; plane stress solves S33(E33) = 0 by Newton and condenses the
-// tangent, D = D_pp - D_p3 D_3p / D_33 (exact linearisation of the constrained point).
+// out-of-plane state. Plane strain takes E33 = 0; plane stress solves S33(E33) = 0 by Newton and condenses
+// the tangent, D = D_pp - D_p3 D_3p / D_33 (exact linearisation of the constrained point).
 struct PlaneResponse {
   double energy = 0.0;
   Eigen::Vector3d stress;
   Eigen::Matrix3d tangent;
-  double c33 = 1.0;   // F33^2
-  double s33 = 0.0;   // out-of-plane S (non-zero in plane strain)
+  double c33 = 1.0;  // F33^2
+  double s33 = 0.0;  // out-of-plane S (non-zero in plane strain)
 };
 
 PlaneResponse plane_response(const Material& material, const Eigen::Matrix2d& e, PlaneHypothesis hypothesis,

@@ -1,5 +1,6 @@
-// RAII owners of PETSc objects and the PetscCall-style check that turns a PETSc error code into a halfeti error.
-// Life cycle everywhere: Create -> set defaults -> XSetFromOptions last -> use -> the owner's destructor destroys.
+// RAII owners of PETSc objects and the PetscCall-style check that turns a PETSc error code into a halfeti
+// error. Life cycle everywhere: Create -> set defaults -> XSetFromOptions last -> use -> the owner's
+// destructor destroys.
 #pragma once
 
 #include <petscksp.h>
@@ -15,12 +16,12 @@ namespace detail {
 
 // Checks a PETSc return code; a failure becomes halfeti::InternalError naming the call, the PETSc message and
 // where it happened.
-#define HALFETI_PETSC_CALL(call)                                                                          \
-  do {                                                                                                    \
-    PetscErrorCode halfeti_petsc_code_ = (call);                                                          \
-    if (halfeti_petsc_code_ != 0)                                                                         \
-      ::halfeti::structure::detail::raise_petsc_error(halfeti_petsc_code_, #call, __func__, __FILE__,     \
-                                                      __LINE__);                                          \
+#define HALFETI_PETSC_CALL(call)                                                                      \
+  do {                                                                                                \
+    PetscErrorCode halfeti_petsc_code_ = (call);                                                      \
+    if (halfeti_petsc_code_ != 0)                                                                     \
+      ::halfeti::structure::detail::raise_petsc_error(halfeti_petsc_code_, #call, __func__, __FILE__, \
+                                                      __LINE__);                                      \
   } while (0)
 
 // Owns one PETSc handle (Mat, Vec, KSP, ...). Destroy is PETSc's XDestroy; it runs only while PETSc is alive.

@@ -1,6 +1,7 @@
-// Distribution of the plate over the structure's ranks: elements split by METIS (dual graph, elements sharing an
-// edge), each node owned by the lowest rank among its elements, and PETSc's numbering of the nodes: by owner rank,
-// then by node id, so that each rank owns one contiguous block range. On one rank the numbering is the identity.
+// Distribution of the plate over the structure's ranks: elements split by METIS (dual graph, elements sharing
+// an edge), each node owned by the lowest rank among its elements, and PETSc's numbering of the nodes: by
+// owner rank, then by node id, so that each rank owns one contiguous block range. On one rank the numbering
+// is the identity.
 #pragma once
 
 #include <mpi.h>
@@ -12,11 +13,11 @@
 namespace halfeti::structure {
 
 struct PlatePartition {
-  std::vector<int> element_rank;  // per element
-  std::vector<int> node_rank;     // per node
-  std::vector<int> petsc_node;    // node id -> PETSc block row
+  std::vector<int> element_rank;    // per element
+  std::vector<int> node_rank;       // per node
+  std::vector<int> petsc_node;      // node id -> PETSc block row
   std::vector<int> owned_elements;  // of this rank, ascending
-  int first_block = 0;            // this rank's PETSc block rows: [first_block, first_block + owned_blocks)
+  int first_block = 0;              // this rank's PETSc block rows: [first_block, first_block + owned_blocks)
   int owned_blocks = 0;
 };
 

@@ -1,12 +1,13 @@
-// The rubber plate in time: Newmark time integration with Newton iterations on PETSc (the global assembly layer).
+// The rubber plate in time: Newmark time integration with Newton iterations on PETSc (the global assembly
+// layer).
 //
 // Sign convention of one Newton iteration (eq. 21 without the contact rows):
 //   K_eff du = r,   K_eff = K_solid + K_nodal + c0 M,   r = R - F - M a,
-// with R the external loads at t + dt, F the internal forces (solid elements and NodalElements such as cables),
-// a the Newmark acceleration of the current iterate and c0 = 1 / (beta dt^2). The clamped base rows are identity
-// with a zero right-hand side. The coupling adds its contact rows and columns (eq. 21) by having
-// add_newton_system() write K_eff and r into a larger matrix of its own at an offset, solving that, and handing
-// the displacement part of the solution back to apply_increment():
+// with R the external loads at t + dt, F the internal forces (solid elements and NodalElements such as
+// cables), a the Newmark acceleration of the current iterate and c0 = 1 / (beta dt^2). The clamped base rows
+// are identity with a zero right-hand side. The coupling adds its contact rows and columns (eq. 21) by having
+// add_newton_system() write K_eff and r into a larger matrix of its own at an offset, solving that, and
+// handing the displacement part of the solution back to apply_increment():
 //
 //   solver.begin_step(t, dt);
 //   for (;;) {
@@ -21,14 +22,14 @@
 //
 // Ranks: the structure runs on its own communicator. With more than one rank the elements are split by METIS,
 // the matrix is MPIAIJ in PETSc's numbering petsc_dof() (rows by owner rank) and solved with MUMPS; the state
-// (u, v, a), the residual and all probes stay replicated on every rank (the plate has ~1e3 dofs), so every rank
-// takes the same Newton decisions. On one rank PETSc's numbering is the node numbering.
+// (u, v, a), the residual and all probes stay replicated on every rank (the plate has ~1e3 dofs), so every
+// rank takes the same Newton decisions. On one rank PETSc's numbering is the node numbering.
 #pragma once
 
-#include <Eigen/Dense>
 #include <mpi.h>
 #include <petscksp.h>
 
+#include <Eigen/Dense>
 #include <memory>
 #include <string>
 #include <vector>
@@ -51,12 +52,13 @@ struct PlateMaterialParameters {
   double poisson_ratio = 0.45;     // (-1, 0.5); rubber 0.45-0.49 (not stated by the paper)
   double density = 1150.0;         // kg/m^3, > 0 (not stated by the paper; natural rubber 1100-1200)
   PlaneHypothesis hypothesis = PlaneHypothesis::kPlaneStrain;
-  bool selective_reduced_integration = true;  // 2x2 Gauss on the lambda part (plane strain), see q9_element.hpp
+  bool selective_reduced_integration =
+      true;  // 2x2 Gauss on the lambda part (plane strain), see q9_element.hpp
 };
 
 struct NewmarkParameters {
-  double beta = 0.25;   // (0, 0.5]; 1/4 with gamma 1/2 is the trapezoidal rule (energy-conserving, 2nd order)
-  double gamma = 0.5;   // [0.5, 1]; > 0.5 adds numerical damping
+  double beta = 0.25;  // (0, 0.5]; 1/4 with gamma 1/2 is the trapezoidal rule (energy-conserving, 2nd order)
+  double gamma = 0.5;  // [0.5, 1]; > 0.5 adds numerical damping
 };
 
 struct NewtonParameters {
@@ -78,14 +80,16 @@ void validate(const StructureParameters& p);  // UserError naming the parameter 
 
 struct StepReport {
   int newton_iterations = 0;
-  double residual_norm = 0.0;  // N/m, at the last assembly
-  double increment_norm = 0.0; // m, inf-norm of the last increment
+  double residual_norm = 0.0;   // N/m, at the last assembly
+  double increment_norm = 0.0;  // m, inf-norm of the last increment
 };
 
 class PlateSolver {
  public:
-  // comm: the structure's communicator (duplicated). ground may be null (no tank motion); it must outlive this.
-  PlateSolver(MPI_Comm comm, const StructureParameters& params, const excitation::GroundMotion* ground = nullptr);
+  // comm: the structure's communicator (duplicated). ground may be null (no tank motion); it must outlive
+  // this.
+  PlateSolver(MPI_Comm comm, const StructureParameters& params,
+              const excitation::GroundMotion* ground = nullptr);
   ~PlateSolver();
   PlateSolver(const PlateSolver&) = delete;
   PlateSolver& operator=(const PlateSolver&) = delete;
@@ -102,9 +106,10 @@ class PlateSolver {
 
   // ---- loads (R of eq. 21), all per unit depth ----
   void add_nodal_element(NodalElement* element);  // not owned; its force/tangent enter every Newton iteration
-  void add_point_load(int node, const Eigen::Vector2d& force);                     // N/m, dead load
-  void add_edge_load(const std::string& edge_set, const Eigen::Vector2d& traction);  // Pa, dead load on "top"...
-  void clear_loads();                 // point and edge loads
+  void add_point_load(int node, const Eigen::Vector2d& force);  // N/m, dead load
+  void add_edge_load(const std::string& edge_set,
+                     const Eigen::Vector2d& traction);            // Pa, dead load on "top"...
+  void clear_loads();                                             // point and edge loads
   void set_load_factor(double factor) { load_factor_ = factor; }  // scales point and edge loads
   // Nodal forces [N/m], 2 per node, set by the caller before each step (contact / fluid forces).
   Eigen::VectorXd& external_forces() { return external_forces_; }
@@ -120,7 +125,7 @@ class PlateSolver {
   const Eigen::VectorXd& acceleration() const { return a_; }
 
   // ---- whole steps ----
-  StepReport step(double t, double dt);                   // Newmark from t to t + dt
+  StepReport step(double t, double dt);                    // Newmark from t to t + dt
   StepReport solve_static(double t, int load_increments);  // equilibrium, loads ramped 1/n ... n/n
 
   // ---- one Newton iteration in public pieces (for the contact coupling, eq. 21) ----
@@ -128,19 +133,19 @@ class PlateSolver {
   void begin_static(double t);           // no inertia
   void assemble_newton_system();         // into newton_matrix() / newton_residual()
   // Adds K_eff and r at rows/columns offset + petsc_dof() of a caller's matrix and vector (ADD_VALUES, no
-  // MatAssembly). Clamped rows get 1 on the diagonal. Preallocate with node_adjacency(). Collective: each rank
-  // adds its own elements and the residual of the rows it owns.
+  // MatAssembly). Clamped rows get 1 on the diagonal. Preallocate with node_adjacency(). Collective: each
+  // rank adds its own elements and the residual of the rows it owns.
   void add_newton_system(Mat matrix, Vec rhs, PetscInt offset);
   Mat newton_matrix() const { return matrix_.get(); }
   Vec newton_residual() const { return rhs_.get(); }
   double residual_norm() const { return residual_norm_; }
-  Vec solve_newton_increment();             // KSP on the owned system; throws NumericalError on failure
-  void apply_increment(const double* du);   // dof_count() entries; clamped entries ignored
-  // On one rank any Vec (entries offset + petsc_dof()); on several, the Vec of solve_newton_increment() or one
-  // with the same layout (offset 0): it is gathered to every rank.
+  Vec solve_newton_increment();            // KSP on the owned system; throws NumericalError on failure
+  void apply_increment(const double* du);  // dof_count() entries; clamped entries ignored
+  // On one rank any Vec (entries offset + petsc_dof()); on several, the Vec of solve_newton_increment() or
+  // one with the same layout (offset 0): it is gathered to every rank.
   void apply_increment(Vec du, PetscInt offset = 0);
   bool converged() const;
-  void end_step();                          // commits u, v, a of t + dt
+  void end_step();  // commits u, v, a of t + dt
   // Nodes coupled to each node (itself included) by solid and nodal elements.
   std::vector<std::vector<int>> node_adjacency() const;
 
@@ -148,8 +153,8 @@ class PlateSolver {
   Eigen::Vector2d displacement(int node) const { return u_.segment<2>(2 * node); }
   Eigen::Vector2d position(int node) const { return mesh_.nodes[node] + displacement(node); }
   Eigen::Vector2d velocity(int node) const { return v_.segment<2>(2 * node); }
-  double strain_energy() const;   // J/m, solid elements
-  double kinetic_energy() const;  // J/m, 1/2 v^T M v
+  double strain_energy() const;                 // J/m, solid elements
+  double kinetic_energy() const;                // J/m, 1/2 v^T M v
   double element_von_mises(int element) const;  // Pa, mean over the element's 3x3 points (Cauchy)
   double max_von_mises() const;                 // Pa, max over all points
   PhaseTimers& timers() { return timers_; }
@@ -161,8 +166,8 @@ class PlateSolver {
   enum class Mode { kDynamic, kStatic, kInitialAcceleration };
   void build_matrix();
   void build_scatter_map();
-  // Computes residual_ and hands each element's effective matrix (row-major 18 x 18) to element_sink(e, values)
-  // and each nodal element's (dofs, row-major values) to nodal_sink; shared by both assembly paths.
+  // Computes residual_ and hands each element's effective matrix (row-major 18 x 18) to element_sink(e,
+  // values) and each nodal element's (dofs, row-major values) to nodal_sink; shared by both assembly paths.
   template <typename ElementSink, typename NodalSink>
   void compute_newton_terms(ElementSink&& element_sink, NodalSink&& nodal_sink);
   void compute_external(double t);

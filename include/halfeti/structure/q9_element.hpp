@@ -1,22 +1,23 @@
-// The biquadratic nine-node quadrilateral (Q9), total Lagrangian, per unit depth: the element integrator layer.
+// The biquadratic nine-node quadrilateral (Q9), total Lagrangian, per unit depth: the element integrator
+// layer.
 //
-// Why Q9: its displacement field holds x^2, y^2 and x y terms in every element, so the exact pure-bending field
-// (u_x ~ x y, u_y ~ x^2 + nu' y^2) is in the space and a plate bent with one or two elements through its thickness
-// does not shear-lock. Near incompressibility (rubber, nu -> 0.49) the bulk (lambda) part of the energy is
-// integrated with 2x2 Gauss points and the shear (mu) part with 3x3 (selective reduced integration, Hughes 1987,
-// sec. 4.5): 4 volumetric constraints per element instead of 9, which lifts volumetric locking while the fully
-// integrated shear part keeps the element free of spurious zero-energy modes. Both parts come from one energy, so
-// the tangent stays the exact derivative of the residual (Newton converges quadratically).
+// Why Q9: its displacement field holds x^2, y^2 and x y terms in every element, so the exact pure-bending
+// field (u_x ~ x y, u_y ~ x^2 + nu' y^2) is in the space and a plate bent with one or two elements through
+// its thickness does not shear-lock. Near incompressibility (rubber, nu -> 0.49) the bulk (lambda) part of
+// the energy is integrated with 2x2 Gauss points and the shear (mu) part with 3x3 (selective reduced
+// integration, Hughes 1987, sec. 4.5): 4 volumetric constraints per element instead of 9, which lifts
+// volumetric locking while the fully integrated shear part keeps the element free of spurious zero-energy
+// modes. Both parts come from one energy, so the tangent stays the exact derivative of the residual (Newton
+// converges quadratically).
 //
 // Local node numbering is tensor order: node a = i + 3 j at (xi_i, eta_j), xi_i in {-1, 0, 1}.
 //
 // The integrator takes nodal *displacements* u, not positions: F = I + sum_a u_a (x) dN_a/dX. Built from
-// positions (x ~ 0.1 m against strains of 1e-6), F would carry round-off of ~1e-14 that puts a floor of ~1e-8 N/m
-// under the residual and costs a Newton iteration per step.
+// positions (x ~ 0.1 m against strains of 1e-6), F would carry round-off of ~1e-14 that puts a floor of ~1e-8
+// N/m under the residual and costs a Newton iteration per step.
 #pragma once
 
 #include <Eigen/Dense>
-
 #include <array>
 #include <vector>
 

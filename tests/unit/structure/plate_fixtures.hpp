@@ -44,7 +44,8 @@ inline double first_frequency(const StructureParameters& p) {
 // A linear spring from one plate node to a fixed anchor: the simplest NodalElement.
 class AnchorSpring final : public NodalElement {
  public:
-  AnchorSpring(int node, Eigen::Vector2d anchor, double stiffness) : node_(node), anchor_(anchor), k_(stiffness) {}
+  AnchorSpring(int node, Eigen::Vector2d anchor, double stiffness)
+      : node_(node), anchor_(anchor), k_(stiffness) {}
   std::vector<int> nodes() const override { return {node_}; }
   void evaluate(const std::vector<Eigen::Vector2d>& x, Eigen::VectorXd& f, Eigen::MatrixXd& k) override {
     f = k_ * (x[0] - anchor_);

@@ -1,5 +1,5 @@
-// Materials at a point: stress against finite differences of the energy, tangent against finite differences of
-// the stress, and the small-strain limit against linear elasticity.
+// Materials at a point: stress against finite differences of the energy, tangent against finite differences
+// of the stress, and the small-strain limit against linear elasticity.
 #include <gtest/gtest.h>
 
 #include "halfeti/core/error.hpp"
@@ -9,8 +9,8 @@ namespace hs = halfeti::structure;
 
 namespace {
 
-// Green-Lagrange strain of a deformation large enough to make the nonlinear terms matter (stretches of 0.7-1.3,
-// shear 0.25).
+// Green-Lagrange strain of a deformation large enough to make the nonlinear terms matter (stretches of
+// 0.7-1.3, shear 0.25).
 Eigen::Matrix2d sample_strain() {
   Eigen::Matrix2d h;
   h << 0.25, 0.25, -0.15, -0.2;
@@ -65,16 +65,15 @@ TEST_P(MaterialPoint, TangentIsStressDerivative) {
 
 INSTANTIATE_TEST_SUITE_P(
     AllMaterials, MaterialPoint,
-    ::testing::Values(Case{hs::MaterialModel::kNeoHookean, hs::PlaneHypothesis::kPlaneStrain, hs::EnergyPart::kAll},
-                      Case{hs::MaterialModel::kNeoHookean, hs::PlaneHypothesis::kPlaneStrain, hs::EnergyPart::kShear},
-                      Case{hs::MaterialModel::kNeoHookean, hs::PlaneHypothesis::kPlaneStrain, hs::EnergyPart::kBulk},
-                      Case{hs::MaterialModel::kNeoHookean, hs::PlaneHypothesis::kPlaneStress, hs::EnergyPart::kAll},
-                      Case{hs::MaterialModel::kStVenantKirchhoff, hs::PlaneHypothesis::kPlaneStrain,
-                           hs::EnergyPart::kAll},
-                      Case{hs::MaterialModel::kStVenantKirchhoff, hs::PlaneHypothesis::kPlaneStrain,
-                           hs::EnergyPart::kBulk},
-                      Case{hs::MaterialModel::kStVenantKirchhoff, hs::PlaneHypothesis::kPlaneStress,
-                           hs::EnergyPart::kAll}));
+    ::testing::Values(
+        Case{hs::MaterialModel::kNeoHookean, hs::PlaneHypothesis::kPlaneStrain, hs::EnergyPart::kAll},
+        Case{hs::MaterialModel::kNeoHookean, hs::PlaneHypothesis::kPlaneStrain, hs::EnergyPart::kShear},
+        Case{hs::MaterialModel::kNeoHookean, hs::PlaneHypothesis::kPlaneStrain, hs::EnergyPart::kBulk},
+        Case{hs::MaterialModel::kNeoHookean, hs::PlaneHypothesis::kPlaneStress, hs::EnergyPart::kAll},
+        Case{hs::MaterialModel::kStVenantKirchhoff, hs::PlaneHypothesis::kPlaneStrain, hs::EnergyPart::kAll},
+        Case{hs::MaterialModel::kStVenantKirchhoff, hs::PlaneHypothesis::kPlaneStrain, hs::EnergyPart::kBulk},
+        Case{hs::MaterialModel::kStVenantKirchhoff, hs::PlaneHypothesis::kPlaneStress,
+             hs::EnergyPart::kAll}));
 
 TEST(Material, SmallStrainLimitIsLinearElasticity) {
   const double e = 10e6, nu = 0.3;

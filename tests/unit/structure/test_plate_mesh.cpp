@@ -1,5 +1,5 @@
-// The structured plate mesh: sizes, named nodes, clamped base, edge sets and the ordered outer surface that the
-// contact coupling walks.
+// The structured plate mesh: sizes, named nodes, clamped base, edge sets and the ordered outer surface that
+// the contact coupling walks.
 #include <gtest/gtest.h>
 
 #include <set>

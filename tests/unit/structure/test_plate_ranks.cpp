@@ -1,6 +1,6 @@
-// The plate on several ranks (METIS partition, MPIAIJ, MUMPS) gives the same answer as one rank: a large static
-// deflection, then dynamic steps under a tank acceleration. Each rank also solves the whole plate alone on
-// PETSC_COMM_SELF as the reference.
+// The plate on several ranks (METIS partition, MPIAIJ, MUMPS) gives the same answer as one rank: a large
+// static deflection, then dynamic steps under a tank acceleration. Each rank also solves the whole plate
+// alone on PETSC_COMM_SELF as the reference.
 #include <gtest/gtest.h>
 
 #include "halfeti/core/error.hpp"
@@ -49,9 +49,10 @@ TEST(PlateRanks, SameAnswerOnOneAndSeveralRanks) {
   int rank = 0;
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
   if (rank == 0)
-    std::printf("ranks %d: static tip (%.12e, %.12e), after 10 steps (%.12e, %.12e), Newton iterations %d vs %d\n",
-              size, shared.static_tip.x(), shared.static_tip.y(), shared.dynamic_tip.x(), shared.dynamic_tip.y(),
-              shared.iterations, alone.iterations);
+    std::printf(
+        "ranks %d: static tip (%.12e, %.12e), after 10 steps (%.12e, %.12e), Newton iterations %d vs %d\n",
+        size, shared.static_tip.x(), shared.static_tip.y(), shared.dynamic_tip.x(), shared.dynamic_tip.y(),
+        shared.iterations, alone.iterations);
   EXPECT_GT(alone.static_tip.x(), 0.1 * 0.08);
   EXPECT_NEAR((shared.static_tip - alone.static_tip).norm(), 0.0, 1e-12);
   EXPECT_NEAR((shared.dynamic_tip - alone.dynamic_tip).norm(), 0.0, 1e-12);

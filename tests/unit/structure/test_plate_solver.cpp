@@ -1,5 +1,5 @@
-// The plate solver on small cases: static cantilever, loads, the NodalElement hook, the split Newton API, the tank
-// frame's body force, error reporting and probes.
+// The plate solver on small cases: static cantilever, loads, the NodalElement hook, the split Newton API, the
+// tank frame's body force, error reporting and probes.
 #include <gtest/gtest.h>
 #include <petscsys.h>
 
@@ -105,7 +105,8 @@ TEST(PlateSolver, CallerMatrixReceivesTheSameSystem) {
 TEST(PlateSolver, FullNewtonConvergesQuadratically) {
   const auto p = paper_plate(1, 10);
   hs::PlateSolver s(PETSC_COMM_WORLD, p);
-  const double load = hs::testing::bending_stiffness(p) / (p.geometry.height * p.geometry.height);  // alpha = 1
+  const double load =
+      hs::testing::bending_stiffness(p) / (p.geometry.height * p.geometry.height);  // alpha = 1
   s.add_edge_load("top", Eigen::Vector2d(load / p.geometry.thickness, 0.0));
   EXPECT_LE(s.solve_static(0.0, 1).newton_iterations, 10);
   EXPECT_GT(s.displacement(s.mesh().node("top_centre")).x(), 0.25 * p.geometry.height);
@@ -129,7 +130,8 @@ TEST(PlateSolver, GravityShortensThePlate) {
   hs::PlateSolver s(PETSC_COMM_WORLD, p);
   s.solve_static(0.0, 1);
   // Column under its own weight: top displacement -rho g L^2 / (2 E*), E* the plane-strain axial modulus
-  // E (1 - nu) / ((1 + nu)(1 - 2 nu)) with the lateral faces free... bounded by the uniaxial and confined moduli.
+  // E (1 - nu) / ((1 + nu)(1 - 2 nu)) with the lateral faces free... bounded by the uniaxial and confined
+  // moduli.
   const double e = p.material.youngs_modulus, nu = p.material.poisson_ratio, l = p.geometry.height;
   const double w = p.material.density * 9.81 * l * l / 2.0;
   const double top = s.displacement(s.mesh().node("top_centre")).y();
@@ -208,7 +210,8 @@ TEST(PlateSolver, VonMisesAtTheRootMatchesBeamStress) {
   hs::PlateSolver s(PETSC_COMM_WORLD, p);
   const double load = 1e-3;
   static_tip(s, load);
-  // Bending stress at the clamped root: M c / I = 6 P L / t^2 (uniaxial-like in plane strain, within nu terms).
+  // Bending stress at the clamped root: M c / I = 6 P L / t^2 (uniaxial-like in plane strain, within nu
+  // terms).
   const double t = p.geometry.thickness, sigma = 6.0 * load * p.geometry.height / (t * t);
   EXPECT_GT(s.max_von_mises(), 0.7 * sigma);
   EXPECT_LT(s.max_von_mises(), 1.5 * sigma);

@@ -1,6 +1,7 @@
-// Validation of the plate against beam theory (LABELS validation): static tip deflection and mesh convergence,
-// the large-deflection elastica, no locking at nu = 0.49, the first natural frequency, energy conservation of the
-// trapezoidal rule, and the cost of one Newton iteration. Figures are printed for docs/structure.md.
+// Validation of the plate against beam theory (LABELS validation): static tip deflection and mesh
+// convergence, the large-deflection elastica, no locking at nu = 0.49, the first natural frequency, energy
+// conservation of the trapezoidal rule, and the cost of one Newton iteration. Figures are printed for
+// docs/structure.md.
 #include <gtest/gtest.h>
 #include <petscsys.h>
 
@@ -18,7 +19,8 @@ double now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-// Horizontal dead load `load` [N/m] spread uniformly over the top edge; returns the tip (top centre) displacement.
+// Horizontal dead load `load` [N/m] spread uniformly over the top edge; returns the tip (top centre)
+// displacement.
 Eigen::Vector2d static_tip(hs::PlateSolver& s, double load, int increments = 1) {
   s.clear_loads();
   s.add_edge_load("top", Eigen::Vector2d(load / s.parameters().geometry.thickness, 0.0));
@@ -56,8 +58,8 @@ Eigen::Vector2d elastica_tip(double alpha) {
   return tip;
 }
 
-// Cost of a time step at the paper's maximum dt (1.6e-5 s) during free vibration: microseconds per step and mean
-// Newton iterations per step.
+// Cost of a time step at the paper's maximum dt (1.6e-5 s) during free vibration: microseconds per step and
+// mean Newton iterations per step.
 Eigen::Vector2d step_cost(hs::PlateSolver& s, int steps) {
   s.clear_loads();
   s.initialise_acceleration(0.0);
@@ -70,7 +72,8 @@ Eigen::Vector2d step_cost(hs::PlateSolver& s, int steps) {
 
 TEST(PlateValidation, SmallLoadCantileverConvergence) {
   const double load = 1e-3;  // N/m, tip deflection ~1e-4 L (linear regime)
-  std::printf("\nmesh      elements  dofs   tip/EB - 1  tip/Timoshenko - 1  static [ms]  step [us]  Newton/step\n");
+  std::printf(
+      "\nmesh      elements  dofs   tip/EB - 1  tip/Timoshenko - 1  static [ms]  step [us]  Newton/step\n");
   struct Row {
     int across, along;
     double nu;
@@ -84,11 +87,12 @@ TEST(PlateValidation, SmallLoadCantileverConvergence) {
     const double tip = static_tip(s, load).x();
     const double cost = now() - t0;
     const double eb = hs::testing::euler_bernoulli_tip(p, load);
-    const double shear = load * p.geometry.height / (5.0 / 6.0 * p.material.youngs_modulus /
-                                                     (2 * (1 + p.material.poisson_ratio)) * p.geometry.thickness);
+    const double shear =
+        load * p.geometry.height /
+        (5.0 / 6.0 * p.material.youngs_modulus / (2 * (1 + p.material.poisson_ratio)) * p.geometry.thickness);
     const Eigen::Vector2d step = step_cost(s, r.across * r.along > 200 ? 10 : 50);
-    std::printf("%d x %-3d%s  %5d  %5d   %+.5f     %+.5f          %7.2f    %7.0f    %.1f\n", r.across, r.along,
-                r.nu == 0.0 ? " nu=0" : "     ", r.across * r.along, s.dof_count(), tip / eb - 1,
+    std::printf("%d x %-3d%s  %5d  %5d   %+.5f     %+.5f          %7.2f    %7.0f    %.1f\n", r.across,
+                r.along, r.nu == 0.0 ? " nu=0" : "     ", r.across * r.along, s.dof_count(), tip / eb - 1,
                 tip / (eb + shear) - 1, 1e3 * cost, step(0), step(1));
     if (r.across == 2 && r.along == 60) error_paper = tip / eb - 1;
     if (r.across == 8 && r.nu > 0.0) error_fine = tip / eb - 1;
@@ -104,7 +108,8 @@ TEST(PlateValidation, NearlyIncompressibleDoesNotLock) {
     p.material.selective_reduced_integration = reduced;
     hs::PlateSolver s(PETSC_COMM_WORLD, p);
     const double ratio = static_tip(s, load).x() / hs::testing::euler_bernoulli_tip(p, load);
-    std::printf("nu = 0.49, 2 x 60, %s integration: tip / EB - 1 = %+.5f\n", reduced ? "selective" : "full", ratio - 1);
+    std::printf("nu = 0.49, 2 x 60, %s integration: tip / EB - 1 = %+.5f\n", reduced ? "selective" : "full",
+                ratio - 1);
     if (reduced) {
       EXPECT_NEAR(ratio, 1.0, 0.02);
     }
@@ -125,10 +130,11 @@ TEST(PlateValidation, LargeDeflectionMatchesElastica) {
     const double l = p.geometry.height;
     const double load = alpha * hs::testing::bending_stiffness(p) / (l * l);
     const Eigen::Vector2d tip = static_tip(s, load, 4) / l;
-    std::printf("elastica alpha = %.1f: reference lateral %.5f L, shortening %.5f L; %d x %d: lateral %.5f L "
-                "(%+.4f), shortening %.5f L (%+.4f), Newton iterations %d\n",
-                alpha, reference.x(), reference.y(), mesh.first, mesh.second, tip.x(), tip.x() / reference.x() - 1,
-                -tip.y(), -tip.y() / reference.y() - 1, s.last_step().newton_iterations);
+    std::printf(
+        "elastica alpha = %.1f: reference lateral %.5f L, shortening %.5f L; %d x %d: lateral %.5f L "
+        "(%+.4f), shortening %.5f L (%+.4f), Newton iterations %d\n",
+        alpha, reference.x(), reference.y(), mesh.first, mesh.second, tip.x(), tip.x() / reference.x() - 1,
+        -tip.y(), -tip.y() / reference.y() - 1, s.last_step().newton_iterations);
     EXPECT_NEAR(tip.x() / reference.x(), 1.0, 0.01);
     EXPECT_NEAR(-tip.y() / reference.y(), 1.0, 0.02);
   }
@@ -137,7 +143,8 @@ TEST(PlateValidation, LargeDeflectionMatchesElastica) {
 // Releases the plate from a static bend under a tip load and integrates `periods` first-mode periods with
 // `steps_per_period` trapezoidal steps. Returns (first frequency from downward zero crossings of the tip,
 // worst relative drift of strain + kinetic energy, microseconds per step).
-Eigen::Vector3d free_vibration(const hs::StructureParameters& p, double tip_load, int periods, int steps_per_period) {
+Eigen::Vector3d free_vibration(const hs::StructureParameters& p, double tip_load, int periods,
+                               int steps_per_period) {
   hs::PlateSolver s(PETSC_COMM_WORLD, p);
   const double period = 1.0 / hs::testing::first_frequency(p);
   static_tip(s, tip_load);
@@ -167,20 +174,22 @@ TEST(PlateValidation, FirstNaturalFrequency) {
   const auto p = paper_plate(2, 60);
   const double f_ref = hs::testing::first_frequency(p);
   const Eigen::Vector3d r = free_vibration(p, 1e-3, 6, 100);
-  std::printf("first frequency, 2 x 60: FE %.5f Hz, 1.875^2 sqrt(EI/(rho A L^4))/(2 pi) = %.5f Hz (%+.4f), "
-              "%.0f us per step\n", r(0), f_ref, r(0) / f_ref - 1, r(2));
+  std::printf(
+      "first frequency, 2 x 60: FE %.5f Hz, 1.875^2 sqrt(EI/(rho A L^4))/(2 pi) = %.5f Hz (%+.4f), "
+      "%.0f us per step\n",
+      r(0), f_ref, r(0) / f_ref - 1, r(2));
   EXPECT_NEAR(r(0) / f_ref, 1.0, 0.02);
 }
 
 TEST(PlateValidation, TrapezoidalRuleConservesEnergy) {
-  // Tip amplitude 0.075% of the height. The trapezoidal rule conserves energy exactly only for linear systems;
-  // here the drift grows as amplitude^2 (geometric nonlinearity) and falls steeply with dt: measured over 10
-  // periods at T/40, 0.075% -> 1e-7, 0.23% -> 8e-7, 0.75% -> 9e-6 (docs/structure.md). Much smaller amplitudes
-  // hit the round-off of the energy itself (I1 - 3 and ln J cancel to ~1e-16 / strain relative).
+  // Tip amplitude 0.075% of the height. The trapezoidal rule conserves energy exactly only for linear
+  // systems; here the drift grows as amplitude^2 (geometric nonlinearity) and falls steeply with dt: measured
+  // over 10 periods at T/40, 0.075% -> 1e-7, 0.23% -> 8e-7, 0.75% -> 9e-6 (docs/structure.md). Much smaller
+  // amplitudes hit the round-off of the energy itself (I1 - 3 and ln J cancel to ~1e-16 / strain relative).
   const auto p = paper_plate(1, 20);
   const Eigen::Vector3d r = free_vibration(p, 0.01, 100, 40);
-  std::printf("trapezoidal rule, 1 x 20, 100 periods at T/40: max |E - E0| / E0 = %.2e, %.0f us per step\n", r(1),
-              r(2));
+  std::printf("trapezoidal rule, 1 x 20, 100 periods at T/40: max |E - E0| / E0 = %.2e, %.0f us per step\n",
+              r(1), r(2));
   EXPECT_LT(r(1), 1e-6);
 }
 
@@ -190,8 +199,8 @@ TEST(PlateValidation, NewtonIterationCost) {
     hs::PlateSolver s(PETSC_COMM_WORLD, p);
     s.add_edge_load("top", Eigen::Vector2d(1.0, 0.0));
     s.begin_step(0.0, 1.6e-5);  // the paper's maximum time step
-    // The machine is shared: report the mean over all iterations and the best of 20 batches of 50 (closest to an
-    // unloaded core).
+    // The machine is shared: report the mean over all iterations and the best of 20 batches of 50 (closest to
+    // an unloaded core).
     double assembly = 0.0, solve = 0.0, best = 1e9;
     const int batches = 20, per_batch = 50;
     for (int b = 0; b < batches; ++b) {
@@ -209,10 +218,11 @@ TEST(PlateValidation, NewtonIterationCost) {
       best = std::min(best, batch / per_batch);
     }
     const int n = batches * per_batch;
-    std::printf("one Newton iteration, %d x %d Q9 (%d dofs): assembly %.1f us + KSP (LU) %.1f us = %.1f us mean, "
-                "%.1f us best batch\n",
-                mesh.first, mesh.second, s.dof_count(), 1e6 * assembly / n, 1e6 * solve / n,
-                1e6 * (assembly + solve) / n, 1e6 * best);
+    std::printf(
+        "one Newton iteration, %d x %d Q9 (%d dofs): assembly %.1f us + KSP (LU) %.1f us = %.1f us mean, "
+        "%.1f us best batch\n",
+        mesh.first, mesh.second, s.dof_count(), 1e6 * assembly / n, 1e6 * solve / n,
+        1e6 * (assembly + solve) / n, 1e6 * best);
   }
   SUCCEED();
 }

@@ -1,5 +1,6 @@
-// The Q9 integrator: internal force against finite differences of the energy, tangent against finite differences
-// of the internal force (every material, hypothesis and integration), and the patch test on distorted elements.
+// The Q9 integrator: internal force against finite differences of the energy, tangent against finite
+// differences of the internal force (every material, hypothesis and integration), and the patch test on
+// distorted elements.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -10,7 +11,8 @@ namespace hs = halfeti::structure;
 
 namespace {
 
-// A distorted reference element (straight-sided quadrilateral, midside and centre nodes moved off their places).
+// A distorted reference element (straight-sided quadrilateral, midside and centre nodes moved off their
+// places).
 hs::Q9Coordinates distorted_reference() {
   hs::Q9Coordinates x;
   const Eigen::Vector2d corner[4] = {{0.0, 0.0}, {2.0e-3, 0.2e-3}, {1.8e-3, 1.5e-3}, {-0.2e-3, 1.2e-3}};
@@ -108,8 +110,9 @@ TEST(Q9, RigidRotationIsStressFree) {
   EXPECT_NEAR(f.norm(), 0.0, 1e-9);
 }
 
-// Patch test: four distorted Q9 elements sharing an interior node; an affine motion of all nodes gives a constant
-// F, so the interior nodes must be in equilibrium, and Newton from a perturbed interior must return to it.
+// Patch test: four distorted Q9 elements sharing an interior node; an affine motion of all nodes gives a
+// constant F, so the interior nodes must be in equilibrium, and Newton from a perturbed interior must return
+// to it.
 TEST(Q9, PatchTestOnDistortedMesh) {
   for (auto model : {hs::MaterialModel::kNeoHookean, hs::MaterialModel::kStVenantKirchhoff}) {
     for (bool reduced : {true, false}) {
