@@ -40,6 +40,26 @@ std::string format(const char* fmt, double a) {
   return buf;
 }
 
+// The structure solves on world rank 0 alone; its failure must stop every rank together (no rank may be left
+// waiting in a collective call), so rank 0 runs `work`, then shares the outcome.
+template <class Work>
+void on_structure_rank(MPI_Comm comm, bool structure_rank, Work&& work) {
+  std::string failure;
+  if (structure_rank) {
+    try {
+      work();
+    } catch (const NumericalError& e) {
+      failure = e.what();
+    }
+  }
+  int n = static_cast<int>(failure.size());
+  MPI_Bcast(&n, 1, MPI_INT, 0, comm);
+  if (n == 0) return;
+  failure.resize(static_cast<size_t>(n));
+  MPI_Bcast(failure.data(), n, MPI_CHAR, 0, comm);
+  throw NumericalError(failure);
+}
+
 }  // namespace
 
 void build_parameters(const scene::Scene& scene, Parts& parts) {
@@ -128,6 +148,7 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
     ScopedTimer timer(timers_, "setup");
     build_structure(parts_, comm_);
     plate_fields_ = std::make_unique<io::FieldSeries>(comm_, out_dir_ + "/fields", "plate");
+    plate_checkpoints_ = std::make_unique<io::FieldSeries>(comm_, out_dir_ + "/checkpoints", "plate_state");
   }
   std::vector<std::string> names;
   for (const auto& p : probes_) names.push_back(p.name);
@@ -174,22 +195,27 @@ void Simulation::announce() {
 }
 
 void Simulation::prepare_structure() {
-  if (!parts_.plate || !parts_.structure_setup) return;
-  if (parts_.structure_setup->start_static) {
-    // The equilibrium of the tank at rest: every ground motion is zero before t = 0, so solve at t = -1 s.
-    const auto report = parts_.plate->solve_static(-1.0, 10);
-    log_->line("structure: static equilibrium in " + std::to_string(report.newton_iterations) + " Newton iterations");
-  }
-  parts_.plate->initialise_acceleration(0.0);
+  if (!parts_.structure_setup) return;
+  on_structure_rank(comm_, parts_.structure_rank, [&] {
+    if (parts_.structure_setup->start_static) {
+      // The equilibrium of the tank at rest: every ground motion is zero before t = 0, so solve at t = -1 s.
+      const auto report = parts_.plate->solve_static(-1.0, 10);
+      log_->line("structure: static equilibrium in " + std::to_string(report.newton_iterations) +
+                 " Newton iterations");
+    }
+    parts_.plate->initialise_acceleration(0.0);
+  });
 }
 
 void Simulation::step_structure(double t, double dt) {
-  if (!parts_.plate) return;
+  if (!parts_.structure_setup) return;
   ScopedTimer timer(timers_, "structure");
-  const double ag = parts_.motion->acceleration(t + dt);
-  for (size_t i = 0; i < parts_.cables.size(); ++i)
-    parts_.cables[i]->set_horizontal_load(-cable_line_mass(parts_.cable_setups[i]) * ag);
-  parts_.plate->step(t, dt);
+  on_structure_rank(comm_, parts_.structure_rank, [&] {
+    const double ag = parts_.motion->acceleration(t + dt);
+    for (size_t i = 0; i < parts_.cables.size(); ++i)
+      parts_.cables[i]->set_horizontal_load(-cable_line_mass(parts_.cable_setups[i]) * ag);
+    parts_.plate->step(t, dt);
+  });
 }
 
 double Simulation::advance(double remaining) {
@@ -252,15 +278,36 @@ void Simulation::write_fields(double t) {
 }
 
 void Simulation::write_checkpoint(const std::string& label) {
-  if (!parts_.fluid) return;
   ScopedTimer timer(timers_, "checkpoint");
-  const sph::Fluid& f = *parts_.fluid;
-  const std::size_t n = f.owned_count();
-  std::vector<double> gid(f.gid().begin(), f.gid().begin() + static_cast<long>(n));
-  const std::string path = checkpoints_->write(t_, n, f.x().data(), f.y().data(),
-                                               {{"vx", f.vx().data()}, {"vy", f.vy().data()},
-                                                {"rho", f.rho().data()}, {"gid", gid.data()}});
-  log_->line("checkpoint (" + label + "): " + path);
+  if (parts_.fluid) {
+    const sph::Fluid& f = *parts_.fluid;
+    const std::size_t n = f.owned_count();
+    std::vector<double> gid(f.gid().begin(), f.gid().begin() + static_cast<long>(n));
+    const std::string path = checkpoints_->write(t_, n, f.x().data(), f.y().data(),
+                                                 {{"vx", f.vx().data()}, {"vy", f.vy().data()},
+                                                  {"rho", f.rho().data()}, {"gid", gid.data()}});
+    log_->line("checkpoint (" + label + "): " + path);
+  }
+  if (plate_checkpoints_) {
+    // The plate's Newmark state on its reference nodes (rank 0 holds it; the others write nothing).
+    std::vector<double> x, y, u[2], v[2], a[2];
+    if (const auto* plate = parts_.plate.get()) {
+      for (int n = 0; n < plate->node_count(); ++n) {
+        x.push_back(plate->mesh().nodes[n].x());
+        y.push_back(plate->mesh().nodes[n].y());
+        for (int c = 0; c < 2; ++c) {
+          u[c].push_back(plate->displacement()(2 * n + c));
+          v[c].push_back(plate->velocity()(2 * n + c));
+          a[c].push_back(plate->acceleration()(2 * n + c));
+        }
+      }
+    }
+    const std::string path = plate_checkpoints_->write(
+        t_, x.size(), x.data(), y.data(),
+        {{"ux", u[0].data()}, {"uy", u[1].data()}, {"vx", v[0].data()}, {"vy", v[1].data()}, {"ax", a[0].data()},
+         {"ay", a[1].data()}});
+    log_->line("checkpoint (" + label + "): " + path);
+  }
 }
 
 std::string Simulation::progress_line(double dt, double wall) const {
@@ -283,14 +330,14 @@ void Simulation::run() {
   const double start = wall_now();
   announce();
   if (parts_.fluid) initial_mass_ = parts_.fluid->total_mass();
-  prepare_structure();
 
   double next_probe = probe_dt, next_field = field_dt, next_checkpoint = checkpoint_dt, next_progress = progress_dt;
-  sample(t_);
-  if (field_dt > 0) write_fields(t_);
   const double loop_start = wall_now();
   double dt = 0.0;
   try {
+    prepare_structure();
+    sample(t_);
+    if (field_dt > 0) write_fields(t_);
     // A step ends within round-off of a scheduled time counts as reaching it.
     const double tol = 1e-9 * end;
     while (t_ < end - tol) {
@@ -315,6 +362,7 @@ void Simulation::run() {
       }
     }
   } catch (const NumericalError& e) {
+    // Errors are raised on every rank together (the monitors reduce first), so the checkpoint is collective.
     log_->line(std::string("stopped: ") + e.what());
     write_checkpoint("at the failure");
     write_summary("numerical_failure", wall_now() - start, wall_now() - loop_start);

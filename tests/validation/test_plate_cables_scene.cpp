@@ -26,3 +26,16 @@ TEST(PlateCablesScene, StartsAt135kPaAndThePulseLoadsOneCable) {
   EXPECT_LT(*std::min_element(left.begin(), left.end()), left[0]);
   EXPECT_NE(test::read_text(out + "/summary.json").find("\"exit_status\": \"ok\""), std::string::npos);
 }
+
+TEST(PlateCablesScene, ANewtonFailureStopsEveryRankWithACheckpoint) {
+  // One Newton iteration cannot reach the pretensioned equilibrium: the run must stop on both ranks (no hang),
+  // with exit status 3, one line on stderr, a checkpoint and summary.json saying so.
+  const std::string out = test::binary_path("validation_plate_cables_failure");
+  const int status = test::run_scene(test::source_path("inputs/validation/plate_cables.yaml"), out,
+                                     "--set structure.newton_max_iterations=1 --set scene.end_time=0.05", 2);
+  EXPECT_EQ(status, 3);
+  const std::string err = test::read_text(out + ".stderr");
+  EXPECT_NE(err.find("halfeti: error: structure: Newton did not converge in 1 iterations"), std::string::npos) << err;
+  EXPECT_NE(test::read_text(out + "/summary.json").find("\"exit_status\": \"numerical_failure\""), std::string::npos);
+  EXPECT_NE(test::read_text(out + "/checkpoints/plate_state.xdmf").find("plate_state_000000.h5"), std::string::npos);
+}

@@ -62,7 +62,7 @@ class Simulation {
   std::vector<ProbeColumn> probes_;
   std::unique_ptr<io::ProbeWriter> probe_out_;
   std::unique_ptr<io::RunLog> log_;
-  std::unique_ptr<io::FieldSeries> fluid_fields_, plate_fields_, checkpoints_;
+  std::unique_ptr<io::FieldSeries> fluid_fields_, plate_fields_, checkpoints_, plate_checkpoints_;
   PhaseTimers timers_;
   double t_ = 0.0;
   long long steps_ = 0;
