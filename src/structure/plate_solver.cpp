@@ -164,6 +164,7 @@ void PlateSolver::begin_step(double t, double dt) {
 
 void PlateSolver::begin_static(double t) {
   mode_ = Mode::kStatic;
+  ramp_ = 1.0;  // solve_static sets its ramp after this
   compute_external(t);
   first_residual_norm_ = -1.0;
   increment_norm_ = -1.0;

@@ -111,7 +111,8 @@ class PlateSolver {
                      const Eigen::Vector2d& traction);            // Pa, dead load on "top"...
   void clear_loads();                                             // point and edge loads
   void set_load_factor(double factor) { load_factor_ = factor; }  // scales point and edge loads
-  // Nodal forces [N/m], 2 per node, set by the caller before each step (contact / fluid forces).
+  // Nodal forces [N/m], 2 per node, set by the caller before each step (contact / fluid forces). On several
+  // ranks rank 0's copy is the one used.
   Eigen::VectorXd& external_forces() { return external_forces_; }
 
   // ---- state ----
