@@ -18,7 +18,7 @@ inline std::string binary_path(const std::string& relative) { return std::string
 // Runs `halfeti run SCENE --out OUT ARGS` on `ranks` ranks (0: without mpirun); returns the exit status.
 inline int run_scene(const std::string& scene, const std::string& out, const std::string& args = "", int ranks = 0) {
   std::string cmd;
-  if (ranks > 0) cmd = "mpirun -n " + std::to_string(ranks) + " --oversubscribe ";
+  if (ranks > 0) cmd = source_path("tests/support/clean-mpirun") + " -n " + std::to_string(ranks) + " ";
   cmd += binary_path("src/app/halfeti") + " run " + scene + " --out " + out + " " + args + " >" + out +
          ".stdout 2>" + out + ".stderr";
   const int raw = std::system(cmd.c_str());
