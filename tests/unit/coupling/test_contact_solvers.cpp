@@ -1,11 +1,12 @@
 // Direct (MUMPS) against fieldsplit Schur solves of eq. 21 at the paper's size: the 2 x 60 Q9 plate (120
 // elements) with a few hundred invaders in the SSOSD layer on both faces. Prints the timings quoted in
-// docs/coupling.md; checks that every variant gives the same plate displacement.
+// docs/coupling.md; checks that every variant gives the same contact forces.
 #include <gtest/gtest.h>
 #include <petscsys.h>
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <utility>
 #include <vector>
@@ -92,7 +93,13 @@ TEST(ContactSolvers, MumpsAgainstFieldSplitAtThePapersSize) {
     const auto start = std::chrono::steady_clock::now();
     for (int n = 0; n < steps; ++n) {
       s.begin_step(n * dt, dt);
-      iterations += sys.solve(inv, dt, (n + 1) * dt).iterations;
+      const auto report = sys.solve(inv, dt, (n + 1) * dt);
+      iterations += report.iterations;
+      if (n == 0 && std::getenv("HALFETI_DEBUG")) {
+        for (std::size_t k = 0; k < report.residual_history.size(); ++k)
+          std::printf(" (%.3e %.3e)", report.residual_history[k], report.gap_history[k]);
+        std::printf("\n");
+      }
       s.end_step();
     }
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -102,7 +109,9 @@ TEST(ContactSolvers, MumpsAgainstFieldSplitAtThePapersSize) {
         variants[v].name.c_str(), inv.size(), s.dof_count(), 1e3 * total / steps,
         1e3 * sys.timers().seconds("solve") / iterations, 1e3 * sys.timers().seconds("assembly") / iterations,
         iterations, steps, 1e3 * sys.timers().seconds("setup") / steps);
-    results.push_back(s.displacement());
+    Eigen::VectorXd f(2 * inv.size());
+    for (std::size_t i = 0; i < inv.size(); ++i) f.segment<2>(2 * i) = sys.forces()[i];
+    results.push_back(f);  // the contact forces: the plate, pushed from both faces, hardly moves
   }
   // Plate alone for scale: its own LU (RCM) solve.
   {
@@ -118,5 +127,5 @@ TEST(ContactSolvers, MumpsAgainstFieldSplitAtThePapersSize) {
   PetscOptionsClear(nullptr);
   for (std::size_t v = 1; v < results.size(); ++v)
     EXPECT_LT((results[v] - results[0]).lpNorm<Eigen::Infinity>(),
-              1e-8 * results[0].lpNorm<Eigen::Infinity>());
+              1e-6 * results[0].lpNorm<Eigen::Infinity>());
 }

@@ -70,7 +70,7 @@ TEST(ContactSystem, InvadersEndOnTheSurfaceTied) {
   const double dt = 1e-4;
   const auto report = press(s, sys, inv, dt);
   print_history(report);
-  for (double g : final_gaps(s, sys, inv)) EXPECT_NEAR(g, 0.0, 1e-12);
+  for (double g : final_gaps(s, sys, inv)) EXPECT_NEAR(g, 0.0, 1e-11);  // Newton stops at 1e-10 x height
   expect_forces_cancel(sys);
   // Pushed outwards (+x) and, tied, carried tangentially with the plate's material point.
   for (std::size_t i = 0; i < inv.size(); ++i) {
@@ -91,7 +91,7 @@ TEST(ContactSystem, InvadersEndOnTheSurfaceNormal) {
   const auto inv = hc::testing::right_face_invaders(s, heights(12, 0.02, 0.078), 2e-4);
   const auto report = press(s, sys, inv, 1e-4);
   print_history(report);
-  for (double g : final_gaps(s, sys, inv)) EXPECT_NEAR(g, 0.0, 1e-12);
+  for (double g : final_gaps(s, sys, inv)) EXPECT_NEAR(g, 0.0, 1e-11);  // Newton stops at 1e-10 x height
   expect_forces_cancel(sys);
   EXPECT_LE(report.iterations, 6);
 }
