@@ -9,6 +9,10 @@
 
 namespace halfeti::coupling {
 
+namespace {
+constexpr int kMaxActiveSetPasses = 5;  // releases settle in one or two passes; a bound keeps a step finite
+}  // namespace
+
 void validate(const CouplingParameters& p) {
   validate(p.ssosd);
   if (!(p.inside_tolerance > 0.0))
@@ -79,22 +83,49 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
     const ContactPoint c = closest_segment(surface_, x);
     invaders.push_back({x, g.mass, c.segment, c.projection.eta, relocated_gap(c.projection.gap, layer)});
   }
+  // Unilateral contact by an active set: an invader the converged solve pulls towards the plate (normal force
+  // C . n < 0, the plate moving away faster than the target allows) is released and Newton continues from the
+  // current iterate with the others. A released particle keeps its predicted state.
+  std::vector<int> active(gathered.size());
+  for (std::size_t k = 0; k < active.size(); ++k) active[k] = static_cast<int>(k);
+  const auto& segments = solver_->mesh().surface;
   solver_->begin_step(t, dt);
-  last_solve_ = system_->solve(invaders, dt, when);
+  int iterations = 0;
+  for (int pass = 0;; ++pass) {
+    std::vector<ContactInvader> subset;
+    for (int k : active) subset.push_back(invaders[k]);
+    last_solve_ = system_->solve(subset, dt, when);
+    iterations += last_solve_.iterations;
+    if (!params_.unilateral || pass >= kMaxActiveSetPasses) break;
+    std::vector<int> kept;
+    for (std::size_t j = 0; j < active.size(); ++j) {
+      const auto& seg = segments[static_cast<std::size_t>(subset[j].segment)];
+      const Eigen::Vector2d d = solver_->position(seg.second) - solver_->position(seg.first);
+      const Eigen::Vector2d n = Eigen::Vector2d(d.y(), -d.x()).normalized();
+      if (system_->forces()[j].dot(n) >= 0.0) kept.push_back(active[j]);
+    }
+    if (kept.size() == active.size()) break;
+    last_.released += static_cast<int>(active.size() - kept.size());
+    active.swap(kept);
+  }
   solver_->end_step();
-  last_.newton_iterations = last_solve_.iterations;
+  last_.newton_iterations = iterations;
 
   // Health: no invader may stay past the (new) surface.
   const SurfacePolyline after = ContactSystem::surface(*solver_);
+  std::vector<int> slot(gathered.size(), -1);
+  for (std::size_t j = 0; j < active.size(); ++j) slot[active[j]] = static_cast<int>(j);
   for (std::size_t k = 0; k < gathered.size(); ++k) {
-    const Eigen::Vector2d& y = system_->positions()[k];
+    const int j = slot[k];
+    const Eigen::Vector2d y = j >= 0 ? system_->positions()[j] : invaders[k].predicted;
     const ContactPoint c = closest_segment(after, y);
     if (c.projection.gap < -params_.inside_tolerance)
       HALFETI_NUMERICAL_ERROR("particle "
                               << gathered[k].gid << " left inside the plate after the contact solve ("
                               << c.projection.gap << " m past segment " << c.segment << ") at (" << y.x()
                               << ", " << y.y() << ") m");
-    const Eigen::Vector2d& f = system_->forces()[k];
+    if (j < 0) continue;  // released: no correction
+    const Eigen::Vector2d& f = system_->forces()[j];
     InvaderCorrection& out = corrections[k];
     out.dx = y.x() - gathered[k].x;
     out.dy = y.y() - gathered[k].y;
@@ -160,14 +191,16 @@ const CouplingStepReport& ContactCoupling::step(double t, double dt, const Inter
   {
     ScopedTimer timer(timers_, "handback");
     scatter_corrections(comm_.get(), root_, gathered, corrections, particles, out);
-    double summary[5] = {static_cast<double>(gathered.size()), static_cast<double>(last_.newton_iterations),
-                         0.0, 0.0, 0.0};
+    double summary[6] = {
+        static_cast<double>(gathered.size()), static_cast<double>(last_.newton_iterations), 0.0, 0.0, 0.0,
+        static_cast<double>(last_.released)};
     for (const auto& c : corrections) {  // root only; gid order: a fixed summation order
       summary[2] += c.fx;
       summary[3] += c.fy;
       summary[4] = std::max(summary[4], std::hypot(c.fx, c.fy));
     }
-    MPI_Bcast(summary, 5, MPI_DOUBLE, root_, comm_.get());
+    MPI_Bcast(summary, 6, MPI_DOUBLE, root_, comm_.get());
+    last_.released = static_cast<int>(summary[5]);
     last_.invaders = static_cast<int>(summary[0]);
     last_.newton_iterations = static_cast<int>(summary[1]);
     last_.force_x = summary[2];

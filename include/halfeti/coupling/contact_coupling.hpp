@@ -38,7 +38,8 @@ struct CouplingParameters {
   ContactConstraint constraint = ContactConstraint::kTied;  // scene: coupling.constraint: tied | normal
   VelocityUpdate velocity_update = VelocityUpdate::kAcceleration;  // scene: coupling.velocity_update
   ContactSolver solver = ContactSolver::kCondensed;  // scene: coupling.solver: condensed | saddle_point
-  SsosdParameters ssosd;           // scene: coupling.ssosd.{enabled,layer_ratio,velocity_floor}
+  bool unilateral = true;  // scene: coupling.unilateral: release invaders the solve would pull (C . n < 0)
+  SsosdParameters ssosd;   // scene: coupling.ssosd.{enabled,layer_ratio,velocity_floor}
   double inside_tolerance = 1e-9;  // m, > 0: an invader ending deeper than this past the surface is an error
   std::string options_prefix = "structure_contact_";  // PETSc options prefix of the contact KSP
 };
@@ -53,6 +54,7 @@ struct CouplingStepReport {
   double force_x = 0.0,
          force_y = 0.0;    // N/m, total contact force on the particles (the plate gets the opposite)
   double max_force = 0.0;  // N/m, largest |C| of one invader
+  int released = 0;        // invaders released by the unilateral active set (they keep their predicted state)
 };
 
 class ContactCoupling {

@@ -200,3 +200,40 @@ TEST(ContactCoupling, FailureIsRaisedOnEveryRankTogether) {
     EXPECT_NE(what.find("did not converge"), std::string::npos) << what;
   }
 }
+
+TEST(ContactCoupling, UnilateralContactReleasesParticlesThePlateWouldPull) {
+  // The plate moves away from the particles on its right face (v = -0.5 m/s): with bilateral contact the
+  // layer's targets would pull them along (C . n < 0); the active set releases them instead.
+  int rank = 0, size = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  for (bool unilateral : {true, false}) {
+    std::unique_ptr<hs::PlateSolver> plate;
+    if (rank == 0) {
+      plate = std::make_unique<hs::PlateSolver>(PETSC_COMM_SELF, hc::testing::plate(2, 20));
+      Eigen::VectorXd v = Eigen::VectorXd::Zero(plate->dof_count());
+      for (int n = 0; n < plate->node_count(); ++n) v(2 * n) = -0.5 * plate->mesh().nodes[n].y() / 0.08;
+      plate->set_state(Eigen::VectorXd::Zero(plate->dof_count()), v);
+    }
+    hc::CouplingParameters params;
+    params.unilateral = unilateral;
+    hc::ContactCoupling coupling(MPI_COMM_WORLD, plate.get(), params);
+    Cloud cloud = make_cloud(rank, size);
+    for (auto& vx : cloud.vx) vx = 0.0;  // water at rest
+    hc::Corrections corr;
+    const auto& report = coupling.step(0.0, 1e-4, cloud.view(), corr);
+    int pulled = 0;
+    for (std::size_t i = 0; i < corr.fx.size(); ++i) {
+      const double outward = cloud.x[i] > 0 ? corr.fx[i] : -corr.fx[i];  // n = +x right, -x left
+      if (outward < -1e-12) ++pulled;
+    }
+    MPI_Allreduce(MPI_IN_PLACE, &pulled, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+    if (unilateral) {
+      EXPECT_GT(report.released, 0);
+      EXPECT_EQ(pulled, 0);
+    } else {
+      EXPECT_EQ(report.released, 0);
+      EXPECT_GT(pulled, 0);
+    }
+  }
+}
