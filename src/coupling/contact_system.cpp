@@ -28,7 +28,13 @@ ContactSystem::ContactSystem(PlateSolver& solver, ContactConstraint form, std::s
       form_(form),
       prefix_(std::move(options_prefix)),
       method_(method),
-      rows_per_(constraint_rows(form)) {}
+      rows_per_(constraint_rows(form)) {
+  // The system is built on the structure's rank with the plate's node numbering as PETSc's: one structure rank.
+  for (int n = 0; n < solver_.node_count(); ++n)
+    for (int c = 0; c < 2; ++c)
+      HALFETI_CHECK(solver_.petsc_dof(n, c) == PlateSolver::dof(n, c),
+                    "the contact coupling needs the plate on one rank (structure.ranks: 1)");
+}
 
 ContactSystem::LocalContact ContactSystem::local_contact(int i, const ContactInvader& inv, double dt) {
   LocalContact lc;
