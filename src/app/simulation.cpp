@@ -173,16 +173,7 @@ void Simulation::announce() {
        << (f->params().scheme == sph::Scheme::kDeltaSph ? "delta-SPH" : "standard SPH");
     log_->line(os.str());
   }
-  if (parts_.structure_setup) {
-    const auto& p = parts_.structure_setup->params;
-    std::ostringstream os;
-    os << "structure: plate " << p.geometry.thickness << " x " << p.geometry.height << " m, "
-       << p.geometry.cells_across << " x " << p.geometry.cells_along << " Q9 elements ("
-       << 2 * (2 * p.geometry.cells_across + 1) * (2 * p.geometry.cells_along + 1) << " dofs), E = "
-       << p.material.youngs_modulus << " Pa, nu = " << p.material.poisson_ratio << ", rho = " << p.material.density
-       << " kg/m^3, on 1 rank";
-    log_->line(os.str());
-  }
+  if (parts_.plate) log_->line(parts_.plate->summary());
   for (const auto& c : parts_.cable_setups) {
     log_->line(cable::describe_per_depth(c.set, c.name));
     std::ostringstream os;
@@ -388,6 +379,11 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
   const double mass = parts_.fluid ? parts_.fluid->total_mass() : 0.0;
   PhaseTimers timers = timers_;
   if (parts_.fluid) timers.merge(parts_.fluid->timers());
+  if (parts_.plate) {
+    PhaseTimers plate;
+    for (const auto& [phase, seconds] : parts_.plate->timers().all()) plate.add(phase, seconds);
+    timers.merge(plate);
+  }
   const long long dofs = parts_.structure_setup
                              ? 2LL * (2 * parts_.structure_setup->params.geometry.cells_across + 1) *
                                    (2 * parts_.structure_setup->params.geometry.cells_along + 1)

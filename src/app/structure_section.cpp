@@ -63,7 +63,9 @@ std::shared_ptr<const Schema> structure_schema() {
     s->add(Key::real("newmark_gamma", "Newmark gamma (1/2: no numerical damping)").def(0.5).in(0.5, 1.0));
     s->add(Key::integer("newton_max_iterations", "Newton iterations per step before the run stops").def(25)
                .in(1, 1000));
-    s->add(Key::real("newton_rtol", "Newton: residual reduction that counts as converged").def(1e-8).above(0.0)
+    s->add(Key::real("newton_rtol", "Newton: residual over the step's force scale that counts as converged")
+               .def(1e-6)
+               .above(0.0)
                .below(1.0));
     s->add(Key::real("time_step", "step of a scene without water (with water the fluid sets it)", "s").positive());
     s->add(Key::boolean("start_static", "solve the static equilibrium (gravity, cables, loads) before t = 0")
