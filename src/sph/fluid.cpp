@@ -61,7 +61,7 @@ Fluid::Fluid(MPI_Comm comm, const FluidParams& params, const excitation::GroundM
   walls_ = build_walls(params, kernel_.support());
   ghosts_ = build_wall_ghosts(params, kernel_.support());
   search_.set_fixed_points(0, walls_.x, walls_.y);
-  search_.set_fixed_points(1, ghosts_.x, ghosts_.y);
+  search_.set_fixed_points(1, ghosts_.x, ghosts_.y, ghosts_.internal);
   set_barriers({});
   initialise_particles();
 }

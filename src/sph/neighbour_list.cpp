@@ -42,8 +42,10 @@ bool segments_cross(double p1x, double p1y, double p2x, double p2y, double q1x, 
 }
 }  // namespace
 
-void NeighbourSearch::set_fixed_points(int set, const std::vector<double>& px, const std::vector<double>& py) {
+void NeighbourSearch::set_fixed_points(int set, const std::vector<double>& px, const std::vector<double>& py,
+                                       const std::vector<int>& internal) {
   FixedBins& b = fixed_[set];
+  b.internal = internal;
   b.x = px;
   b.y = py;
   std::vector<int> cells;
@@ -119,7 +121,12 @@ void NeighbourSearch::fixed_pairs(int set, const double* x, const double* y, int
           const int j = b.items[k];
           const double dx = b.x[j] - x[i], dy = b.y[j] - y[i], r2 = dx * dx + dy * dy;
           if (r2 >= rc2 || r2 == 0.0) continue;
-          if (!barriers_.empty() && set == 1 && crosses_barrier(x[i], y[i], b.x[j], b.y[j])) continue;
+          if (!b.internal.empty() && b.internal[j] >= 0) {
+            const Barrier& w = barriers_[b.internal[j]];
+            if (!segments_cross(x[i], y[i], b.x[j], b.y[j], w.xa, w.ya, w.xb, w.yb)) continue;
+          } else if (!barriers_.empty() && crosses_barrier(x[i], y[i], b.x[j], b.y[j])) {
+            continue;
+          }
           out.push(j, dx, dy, std::sqrt(r2), eval_);
         }
       }

@@ -42,10 +42,10 @@ WallGhosts build_wall_ghosts(const FluidParams& p, double support) {
   const int rows = static_cast<int>(std::ceil(support / dx - 0.5)) + 1;
   // Horizontal walls carry the ghosts past the corners too (they fill the corner quadrants); vertical walls only
   // along their length, so no quadrant is counted twice.
-  auto line = [&](double xa, double ya, double xb, double yb, bool with_extension) {
+  auto line = [&](double xa, double ya, double xb, double yb, bool with_extension, int internal, double side) {
     const double len = std::hypot(xb - xa, yb - ya);
     const int n = std::max(1, static_cast<int>(std::lround(len / db)));
-    const double s = len / n, tx = (xb - xa) / len, ty = (yb - ya) / len, nx = -ty, ny = tx;
+    const double s = len / n, tx = (xb - xa) / len, ty = (yb - ya) / len, nx = -ty * side, ny = tx * side;
     const int next = with_extension ? static_cast<int>(std::ceil(support / s)) : 0;
     for (int k = -next; k <= n + next; ++k) {
       const double share = (with_extension || (k > 0 && k < n)) ? s : 0.5 * s;
@@ -55,13 +55,19 @@ WallGhosts build_wall_ghosts(const FluidParams& p, double support) {
         g.volume.push_back(share * dx);
         g.nx.push_back(nx);
         g.ny.push_back(ny);
+        g.internal.push_back(internal);
       }
     }
   };
-  line(0.0, 0.0, L, 0.0, true);
-  line(0.0, H, 0.0, 0.0, false);
-  line(L, 0.0, L, H, false);
-  if (p.lid) line(L, H, 0.0, H, true);
+  line(0.0, 0.0, L, 0.0, true, -1, 1.0);
+  line(0.0, H, 0.0, 0.0, false, -1, 1.0);
+  line(L, 0.0, L, H, false, -1, 1.0);
+  if (p.lid) line(L, H, 0.0, H, true, -1, 1.0);
+  for (std::size_t w = 0; w < p.internal_walls.size(); ++w) {  // one set of ghosts for each side
+    const auto& iw = p.internal_walls[w];
+    line(iw.xa, iw.ya, iw.xb, iw.yb, false, static_cast<int>(w), 1.0);
+    line(iw.xa, iw.ya, iw.xb, iw.yb, false, static_cast<int>(w), -1.0);
+  }
   return g;
 }
 

@@ -55,7 +55,10 @@ class NeighbourSearch {
 
   // Binds fixed points (set 0: wall particles, set 1: wall ghosts), searched by wall_pairs(); their index order
   // is canonical.
-  void set_fixed_points(int set, const std::vector<double>& px, const std::vector<double>& py);
+  // For set 1, `internal[g]` >= 0 names the barrier a ghost stands behind: it is seen only across that barrier;
+  // other fixed points are never seen across a barrier.
+  void set_fixed_points(int set, const std::vector<double>& px, const std::vector<double>& py,
+                        const std::vector<int>& internal = {});
   void set_barriers(std::vector<Barrier> barriers) { barriers_ = std::move(barriers); }
   const std::vector<Barrier>& barriers() const { return barriers_; }
 
@@ -80,6 +83,7 @@ class NeighbourSearch {
     std::vector<int> start, items;
     std::vector<double> x, y;
     std::vector<char> near;  // cell has fixed points in its 3x3 neighbourhood
+    std::vector<int> internal;
   };
   FixedBins fixed_[2];
   std::vector<Barrier> barriers_;

@@ -24,10 +24,11 @@ struct WallParticles {
 struct WallGhosts {
   std::vector<double> x, y, volume;
   std::vector<double> nx, ny;  // normal of their wall (into the fluid)
+  std::vector<int> internal;   // index of the internal wall they stand behind, -1 for the tank walls
   std::size_t size() const { return x.size(); }
 };
 
-// Ghost rows behind the tank walls; depth = the kernel support.
+// Ghost rows behind the tank walls and on both sides of the internal walls; depth = the kernel support.
 WallGhosts build_wall_ghosts(const FluidParams& p, double support);
 
 // Builds the tank walls (x = 0, x = L, y = 0, lid y = H if asked) and the internal walls. Tank walls extend
