@@ -156,7 +156,7 @@ const CouplingStepReport& ContactCoupling::step(double t, double dt, const Inter
                   comm_.get());  // max is exact: rank-independent
     last_.u_max = u_max;
     last_.layer = layer_thickness(params_.ssosd, u_max, dt);
-    local = find_local_invaders(particles, surface_, last_.layer, rank_);
+    local = find_local_invaders(particles, surface_, last_.layer, thickness_, rank_);
   }
   {
     ScopedTimer timer(timers_, "gather");

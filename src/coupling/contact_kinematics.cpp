@@ -52,4 +52,41 @@ BoundingBox bounding_box(const SurfacePolyline& surface) {
   return b;
 }
 
+SurfaceSearch::SurfaceSearch(const SurfacePolyline& surface, double reach)
+    : surface_(surface), reach_(reach), box_(bounding_box(surface)) {
+  for (int first = 0; first < surface.segment_count(); first += kRun) {
+    const int last = std::min(first + kRun, surface.segment_count());  // points first .. last
+    BoundingBox b;
+    b.lo = b.hi = surface.points[first];
+    for (int k = first; k <= last; ++k) {
+      b.lo = b.lo.cwiseMin(surface.points[k]);
+      b.hi = b.hi.cwiseMax(surface.points[k]);
+    }
+    runs_.push_back(b);
+  }
+}
+
+ContactPoint SurfaceSearch::closest_within_reach(const Eigen::Vector2d& x) const {
+  ContactPoint best;
+  if (!box_.contains(x, reach_)) return best;
+  // Same scan and tie-breaking as closest_segment(), over the runs that can hold a point within reach.
+  for (std::size_t r = 0; r < runs_.size(); ++r) {
+    if (!runs_[r].contains(x, reach_)) continue;
+    const int first = static_cast<int>(r) * kRun;
+    const int last = std::min(first + kRun, surface_.segment_count());
+    for (int k = first; k < last; ++k) {
+      const SegmentProjection p = project_on_segment(x, surface_.points[k], surface_.points[k + 1]);
+      const bool closer = best.segment < 0 || p.distance < best.projection.distance;
+      const bool tie_in_front =
+          best.segment >= 0 && p.distance == best.projection.distance && p.gap > best.projection.gap;
+      if (closer || tie_in_front) {
+        best.segment = k;
+        best.projection = p;
+      }
+    }
+  }
+  if (best.segment >= 0 && best.projection.distance > reach_) best = ContactPoint{};
+  return best;
+}
+
 }  // namespace halfeti::coupling

@@ -29,7 +29,8 @@ ContactSystem::ContactSystem(PlateSolver& solver, ContactConstraint form, std::s
       prefix_(std::move(options_prefix)),
       method_(method),
       rows_per_(constraint_rows(form)) {
-  // The system is built on the structure's rank with the plate's node numbering as PETSc's: one structure rank.
+  // The system is built on the structure's rank with the plate's node numbering as PETSc's: one structure
+  // rank.
   for (int n = 0; n < solver_.node_count(); ++n)
     for (int c = 0; c < 2; ++c)
       HALFETI_CHECK(solver_.petsc_dof(n, c) == PlateSolver::dof(n, c),

@@ -15,15 +15,15 @@ void Corrections::reset(std::size_t count) {
 }
 
 std::vector<Invader> find_local_invaders(const InterfaceParticles& p, const SurfacePolyline& surface,
-                                         double layer, int rank) {
+                                         double layer, double reach, int rank) {
   std::vector<Invader> out;
   if (surface.segment_count() == 0) return out;
-  const BoundingBox box = bounding_box(surface);
+  // An invader is within max(layer, depth inside) of the surface: runs of segments farther away are skipped.
+  const SurfaceSearch search(surface, std::max(layer, reach));
   for (std::size_t i = 0; i < p.count; ++i) {
     const Eigen::Vector2d x(p.x[i], p.y[i]);
-    if (!box.contains(x, layer)) continue;  // cheap reject: the plate covers a small part of the tank
-    const ContactPoint c = closest_segment(surface, x);
-    if (!is_invader(c.projection.gap, layer)) continue;
+    const ContactPoint c = search.closest_within_reach(x);
+    if (c.segment < 0 || !is_invader(c.projection.gap, layer)) continue;
     out.push_back(Invader{p.gid[i], p.x[i], p.y[i], p.vx[i], p.vy[i], p.mass[i], rank, static_cast<int>(i)});
   }
   return out;

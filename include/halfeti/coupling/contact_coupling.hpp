@@ -88,6 +88,7 @@ class ContactCoupling {
 
   Communicator comm_;
   int rank_ = 0, root_ = 0;
+  double thickness_ = 0.0;  // m, the plate's: bounds how deep inside an invader can be found
   structure::PlateSolver* solver_;
   CouplingParameters params_;
   std::unique_ptr<ContactSystem> system_;

@@ -48,4 +48,22 @@ struct BoundingBox {
 };
 BoundingBox bounding_box(const SurfacePolyline& surface);
 
+// closest_segment() for particles near the surface, fast: segments are grouped in runs of consecutive ones
+// with their boxes, and runs whose box is farther than `reach` are skipped. When the particle is within
+// `reach` of the surface the result is exactly closest_segment()'s (same segment, same tie-breaking);
+// otherwise segment = -1.
+class SurfaceSearch {
+ public:
+  SurfaceSearch(const SurfacePolyline& surface, double reach);
+  ContactPoint closest_within_reach(const Eigen::Vector2d& x) const;
+  const BoundingBox& box() const { return box_; }
+
+ private:
+  static constexpr int kRun = 8;
+  const SurfacePolyline& surface_;
+  double reach_;
+  BoundingBox box_;
+  std::vector<BoundingBox> runs_;
+};
+
 }  // namespace halfeti::coupling

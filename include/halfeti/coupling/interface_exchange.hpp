@@ -53,9 +53,11 @@ struct Corrections {
   void reset(std::size_t count);
 };
 
-// Owned particles with gap < layer (layer > 0) or past the surface (layer = 0), by closest segment.
+// Owned particles with gap < layer (layer > 0) or past the surface (layer = 0), by closest segment. reach
+// bounds how far inside a particle can be (half the plate's thickness is enough; the coupling passes the
+// thickness).
 std::vector<Invader> find_local_invaders(const InterfaceParticles& particles, const SurfacePolyline& surface,
-                                         double layer, int rank);
+                                         double layer, double reach, int rank);
 
 // Collective over comm: every rank's invaders on root, sorted by gid; empty on the other ranks.
 std::vector<Invader> gather_invaders(MPI_Comm comm, int root, const std::vector<Invader>& local);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 
 #include "halfeti/core/error.hpp"
 #include "halfeti/coupling/contact_constraint.hpp"
@@ -192,4 +193,32 @@ TEST(ContactConstraint, TiedWithZeroTargetIsTheContactPointItself) {
   const auto n =
       hc::evaluate_constraint(hc::ContactConstraint::kNormal, xp, f, s, 0.0, 0.0, Vector2d::Zero());
   EXPECT_NEAR(n.value(0), 0.1, 1e-15);  // segment (0,0)->(0,2) faces +x: the particle is 0.1 in front of it
+}
+
+TEST(ContactKinematics, FastSearchEqualsTheFullScanWithinReach) {
+  // A wavy 41-point polyline (runs of 8 segments); random points: within reach the fast search returns
+  // exactly the full scan's contact point, beyond it nothing.
+  hc::SurfacePolyline s;
+  for (int k = 0; k <= 40; ++k)
+    s.points.emplace_back(0.1 * std::sin(0.2 * k), 0.05 * k), s.nodes.push_back(k);
+  for (int k = 39; k >= 0; --k)
+    s.points.emplace_back(-0.1 + 0.1 * std::sin(0.2 * k), 0.05 * k), s.nodes.push_back(k);
+  const double reach = 0.03;
+  const hc::SurfaceSearch search(s, reach);
+  std::srand(7);
+  int within = 0;
+  for (int n = 0; n < 20000; ++n) {
+    const Vector2d x(-0.3 + 0.6 * std::rand() / RAND_MAX, -0.1 + 2.2 * std::rand() / RAND_MAX);
+    const auto full = hc::closest_segment(s, x);
+    const auto fast = search.closest_within_reach(x);
+    if (full.projection.distance <= reach) {
+      ++within;
+      ASSERT_EQ(fast.segment, full.segment) << x.transpose();
+      EXPECT_EQ(fast.projection.gap, full.projection.gap);
+      EXPECT_EQ(fast.projection.eta, full.projection.eta);
+    } else {
+      EXPECT_EQ(fast.segment, -1);
+    }
+  }
+  EXPECT_GT(within, 500);
 }
