@@ -78,9 +78,12 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
   // the contact segment, eta (eq. 20) and the target gap (eq. 22, or 0 without SSOSD).
   std::vector<ContactInvader> invaders;
   invaders.reserve(gathered.size());
+  const double reach = std::max(layer, thickness_);
+  const SurfaceSearch before(surface_, reach);
   for (const Invader& g : gathered) {
     const Eigen::Vector2d x(g.x, g.y);
-    const ContactPoint c = closest_segment(surface_, x);
+    const ContactPoint c = before.closest_within_reach(x);  // found by the same search on the owner: in reach
+    HALFETI_CHECK(c.segment >= 0, "invader " << g.gid << " out of the search's reach");
     invaders.push_back({x, g.mass, c.segment, c.projection.eta, relocated_gap(c.projection.gap, layer)});
   }
   // Unilateral contact by an active set: an invader the converged solve pulls towards the plate (normal force
@@ -113,13 +116,15 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
 
   // Health: no invader may stay past the (new) surface.
   const SurfacePolyline after = ContactSystem::surface(*solver_);
+  const SurfaceSearch search_after(after,
+                                   reach);  // a particle past the surface is within the thickness of it
   std::vector<int> slot(gathered.size(), -1);
   for (std::size_t j = 0; j < active.size(); ++j) slot[active[j]] = static_cast<int>(j);
   for (std::size_t k = 0; k < gathered.size(); ++k) {
     const int j = slot[k];
     const Eigen::Vector2d y = j >= 0 ? system_->positions()[j] : invaders[k].predicted;
-    const ContactPoint c = closest_segment(after, y);
-    if (c.projection.gap < -params_.inside_tolerance)
+    const ContactPoint c = search_after.closest_within_reach(y);
+    if (c.segment >= 0 && c.projection.gap < -params_.inside_tolerance)
       HALFETI_NUMERICAL_ERROR("particle "
                               << gathered[k].gid << " left inside the plate after the contact solve ("
                               << c.projection.gap << " m past segment " << c.segment << ") at (" << y.x()

@@ -88,13 +88,13 @@ Cloud make_cloud(int rank, int size) {
 using Record = std::array<double, 7>;  // dx, dy, dvx, dvy, drho, x, y (after the step)
 
 // Runs `steps` coupled steps on comm and returns, on rank 0 of comm, every particle's record by gid.
-std::map<std::int64_t, Record> run(MPI_Comm comm, int steps, std::vector<int>* invaders) {
+std::map<std::int64_t, Record> run(MPI_Comm comm, int steps, std::vector<int>* invaders,
+                                   const hc::CouplingParameters& params) {
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
   std::unique_ptr<hs::PlateSolver> plate;
   if (rank == 0) plate = std::make_unique<hs::PlateSolver>(PETSC_COMM_SELF, hc::testing::plate(2, 20));
-  hc::CouplingParameters params;
   hc::ContactCoupling coupling(comm, plate.get(), params);
   Cloud cloud = make_cloud(rank, size);
   hc::Corrections corr;
@@ -131,15 +131,22 @@ std::map<std::int64_t, Record> run(MPI_Comm comm, int steps, std::vector<int>* i
 
 }  // namespace
 
-TEST(ContactCoupling, SameCorrectionsOnAnyNumberOfRanks) {
+class SameCorrections : public ::testing::TestWithParam<int> {};
+
+TEST_P(SameCorrections, OnAnyNumberOfRanks) {
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  hc::CouplingParameters params;  // 0: tied, condensed (defaults)
+  if (GetParam() == 1) {          // 1: frictionless, full saddle point with MUMPS
+    params.constraint = hc::ContactConstraint::kNormal;
+    params.solver = hc::ContactSolver::kSaddlePoint;
+  }
   std::vector<int> invaders;
-  const auto distributed = run(MPI_COMM_WORLD, 3, &invaders);
+  const auto distributed = run(MPI_COMM_WORLD, 3, &invaders, params);
   for (int n : invaders) EXPECT_GT(n, 0);
   if (rank == 0) {
     std::vector<int> reference_invaders;
-    const auto reference = run(MPI_COMM_SELF, 3, &reference_invaders);
+    const auto reference = run(MPI_COMM_SELF, 3, &reference_invaders, params);
     EXPECT_EQ(invaders, reference_invaders);
     ASSERT_EQ(distributed.size(), reference.size());
     int corrected = 0;
@@ -151,6 +158,8 @@ TEST(ContactCoupling, SameCorrectionsOnAnyNumberOfRanks) {
     EXPECT_GT(corrected, 0);
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(ContactCoupling, SameCorrections, ::testing::Values(0, 1));
 
 TEST(ContactCoupling, ForcesOnParticlesAndOutlineOnEveryRank) {
   int rank = 0, size = 1;
