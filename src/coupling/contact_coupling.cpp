@@ -60,7 +60,7 @@ std::vector<sph::Barrier> ContactCoupling::outline() const {
 
 PhaseTimers ContactCoupling::timers() const {
   PhaseTimers all = timers_;
-  if (system_) all.merge(const_cast<ContactSystem&>(*system_).timers());
+  if (system_) all.merge(system_->timers());
   return all;
 }
 

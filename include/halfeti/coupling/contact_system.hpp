@@ -72,6 +72,7 @@ class ContactSystem {
   static SurfacePolyline surface(const structure::PlateSolver& solver);
 
   PhaseTimers& timers() { return timers_; }
+  const PhaseTimers& timers() const { return timers_; }
 
  private:
   // One invader's share of the Newton system at the current iterate.
