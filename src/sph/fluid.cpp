@@ -73,6 +73,15 @@ void Fluid::set_barriers(const std::vector<Barrier>& extra) {
   search_.set_barriers(std::move(all));
 }
 
+bool Fluid::near_internal_wall(double px, double py) const {
+  for (const auto& w : params_.internal_walls) {
+    const double tx = w.xb - w.xa, ty = w.yb - w.ya, len2 = tx * tx + ty * ty;
+    const double s = len2 > 0.0 ? std::clamp(((px - w.xa) * tx + (py - w.ya) * ty) / len2, 0.0, 1.0) : 0.0;
+    if (std::hypot(px - (w.xa + s * tx), py - (w.ya + s * ty)) < 0.5 * dx_) return true;
+  }
+  return false;
+}
+
 void Fluid::initialise_particles() {
   // Every rank lays out the same lattice with the same global ids, then keeps the particles of its cells.
   std::vector<std::int64_t> gid;
@@ -86,7 +95,7 @@ void Fluid::initialise_particles() {
       for (int i = 0; i < nx; ++i) {
         const double px = b.x0 + (i + 0.5) * dx_, py = b.y0 + (j + 0.5) * dx_;
         const double surface = b.y1 + b.surface_amplitude * std::cos(M_PI * px / params_.tank_length);
-        if (py >= surface) continue;
+        if (py >= surface || near_internal_wall(px, py)) continue;
         gid.push_back(next++);
         x.push_back(px);
         y.push_back(py);

@@ -23,13 +23,14 @@ std::string point(double x, double y) {
 }
 }  // namespace
 
-void Fluid::warn(const std::string& kind, bool active, const std::string& message) {
-  // Edge-triggered: one event when a condition starts, none while it lasts.
+void Fluid::warn(const std::string& kind, bool active, bool cleared, const std::string& message) {
+  // One event when a condition starts; re-armed only once it has clearly gone (hysteresis), so a measure that
+  // hovers at its threshold does not flood the list.
   auto it = std::find(active_warnings_.begin(), active_warnings_.end(), kind);
   if (active && it == active_warnings_.end()) {
     active_warnings_.push_back(kind);
     events_.push_back({time_, step_, kind, message, false});
-  } else if (!active && it != active_warnings_.end()) {
+  } else if (cleared && it != active_warnings_.end()) {
     active_warnings_.erase(it);
   }
 }
@@ -107,9 +108,9 @@ void Fluid::check_health() {
       events_.push_back({time_, step_, "density_variation", m, true});
       HALFETI_NUMERICAL_ERROR(m);
     }
-    warn("density_variation", true, m);
+    warn("density_variation", true, false, m);
   } else {
-    warn("density_variation", false, "");
+    warn("density_variation", false, global.v < 0.8 * params_.max_density_variation, "");
   }
 
   // Spacing collapse (tensile instability): closest pair found by the last neighbour search.
@@ -120,7 +121,7 @@ void Fluid::check_health() {
   if (collapsed)
     os << at << "two particles came within " << dmin << " m (" << dmin / dx_
        << " dx): spacing collapse, tensile instability (keep the tensile correction on)";
-  warn("spacing_collapse", collapsed, os.str());
+  warn("spacing_collapse", collapsed, dmin > 1.5 * params_.spacing_collapse_fraction * dx_, os.str());
 }
 
 }  // namespace halfeti::sph

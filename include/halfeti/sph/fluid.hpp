@@ -77,13 +77,14 @@ class Fluid {
 
  private:
   void initialise_particles();
+  bool near_internal_wall(double x, double y) const;
   void sort_owned_by_cell();
   void exchange_halo();
   void check_health();
   void maybe_rebalance();
   void migrate();
   std::vector<long> global_cell_counts() const;
-  void warn(const std::string& kind, bool active, const std::string& message);
+  void warn(const std::string& kind, bool active, bool cleared, const std::string& message);
 
   Communicator comm_;
   int rank_ = 0, size_ = 1;

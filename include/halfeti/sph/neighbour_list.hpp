@@ -18,6 +18,13 @@ struct Barrier {
   double xa, ya, xb, yb;
 };
 
+// The segments of a polyline given by its points (x0, y0, x1, y1, ...), e.g. the structure's surface.
+inline std::vector<Barrier> barriers_from_polyline(const std::vector<double>& xy) {
+  std::vector<Barrier> out;
+  for (std::size_t k = 0; k + 3 < xy.size(); k += 2) out.push_back({xy[k], xy[k + 1], xy[k + 2], xy[k + 3]});
+  return out;
+}
+
 struct PairList {
   std::vector<int> start;  // pairs of owned particle i are [start[i], start[i+1])
   std::vector<int> j;

@@ -19,7 +19,7 @@ struct WaterBlock {
 };
 
 // A rigid internal wall: a line of repulsive particles between two end points that pushes on both sides; fluid
-// pairs across it do not interact.
+// pairs across it do not interact. Water-block lattice points closer than dx/2 to it are left out.
 struct InternalWall {
   double xa = 0.0, ya = 0.0, xb = 0.0, yb = 0.0;
 };
@@ -69,7 +69,7 @@ struct FluidParams {
 
   // Health
   bool density_variation_fatal = false;
-  double spacing_collapse_fraction = 0.25;   // warn when a pair comes closer than this * dx
+  double spacing_collapse_fraction = 0.2;    // warn when a pair comes closer than this * dx
 };
 
 }  // namespace halfeti::sph

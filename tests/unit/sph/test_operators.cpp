@@ -52,7 +52,7 @@ TEST(NeighbourSearch, BarrierDropsCrossingPairs) {
   PairList pairs;
   search.fluid_pairs(x.data(), y.data(), gid.data(), 2, 2, pairs);
   EXPECT_EQ(pairs.size(), 2u);
-  search.set_barriers({{0.05, 0.0, 0.05, 0.1}});
+  search.set_barriers(barriers_from_polyline({0.05, 0.0, 0.05, 0.04, 0.05, 0.1}));
   search.fluid_pairs(x.data(), y.data(), gid.data(), 2, 2, pairs);
   EXPECT_EQ(pairs.size(), 0u);
 }
