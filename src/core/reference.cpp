@@ -13,6 +13,10 @@ void write_section(std::ostringstream& os, const Schema& schema, const std::stri
   os << "| key | expects | default | meaning |\n|---|---|---|---|\n";
   for (const auto& k : schema.keys()) {
     std::string def = k.default_yaml() ? "`" + *k.default_yaml() + "`" : (k.is_required() ? "required" : "—");
+    if (!k.implying_siblings().empty()) {
+      def = "defaults with";
+      for (const auto& s : k.implying_siblings()) def += " `" + s + "`";
+    }
     os << "| `" << k.name() << "` | " << k.expectation() << " | " << def << " | " << k.doc() << " |\n";
   }
   for (const auto& k : schema.keys()) {

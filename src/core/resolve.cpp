@@ -82,7 +82,7 @@ class Resolver {
         out[k->name()] = value(YAML::Load(*k->default_yaml()), *k, kp);
       } else if (k->is_required()) {
         fail(located, kp, "required key missing: expected " + k->expectation());
-      } else if (k->kind() == ValueKind::kSection && k->is_always()) {
+      } else if (k->kind() == ValueKind::kSection && (k->is_always() || implied(*k, in))) {
         out[k->name()] = section(YAML::Node(YAML::NodeType::Map), *k->schema(), kp, located);
       } else if (k->kind() == ValueKind::kList) {
         out[k->name()] = YAML::Node(YAML::NodeType::Sequence);
@@ -165,6 +165,14 @@ class Resolver {
   }
 
  private:
+  static bool implied(const Key& key, const YAML::Node& in) {
+    const auto& siblings = key.implying_siblings();
+    if (siblings.empty()) return false;
+    for (const auto& s : siblings)
+      if (!in[s].IsDefined() || in[s].IsNull()) return false;
+    return true;
+  }
+
   double number(const YAML::Node& v, const Key& key, const std::string& path) {
     double x = 0;
     if (!v.IsScalar() || !YAML::convert<double>::decode(v, x) || !std::isfinite(x))

@@ -60,6 +60,11 @@ Key& Key::always() {
   always_ = true;
   return *this;
 }
+Key& Key::implied_by(std::vector<std::string> siblings) {
+  implied_by_ = std::move(siblings);
+  return *this;
+}
+
 Key& Key::def(double v) {
   // The shortest text that reads back to the same double, so resolved scenes show 0.005, not 0.0050000000000000001.
   char buf[40];

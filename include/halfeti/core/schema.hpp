@@ -37,6 +37,9 @@ class Key {
 
   Key& required();
   Key& always();  // a section that is resolved from its defaults even when absent
+  // A section resolved from its defaults when absent but every one of `siblings` is present (e.g. the coupling
+  // of water and plate when the scene has both).
+  Key& implied_by(std::vector<std::string> siblings);
   Key& def(double v);
   Key& def(int v);
   Key& def(bool v);
@@ -59,6 +62,7 @@ class Key {
   ValueKind kind() const { return kind_; }
   bool is_required() const { return required_; }
   bool is_always() const { return always_; }
+  const std::vector<std::string>& implying_siblings() const { return implied_by_; }
   const std::optional<std::string>& default_yaml() const { return default_; }
   const std::vector<std::string>& choices() const { return choices_; }
   const std::shared_ptr<const Schema>& schema() const { return schema_; }
@@ -77,6 +81,7 @@ class Key {
   bool required_ = false, always_ = false;
   std::optional<std::string> default_;
   std::vector<std::string> choices_;
+  std::vector<std::string> implied_by_;
   std::shared_ptr<const Schema> schema_;
   double lo_ = -std::numeric_limits<double>::infinity(), hi_ = std::numeric_limits<double>::infinity();
   bool lo_open_ = false, hi_open_ = false;

@@ -106,3 +106,16 @@ TEST(Schema, ReferenceListsEveryKey) {
   for (const char* k : {"spacing", "delta", "scheme", "every", "origin", "verbose"})
     EXPECT_NE(md.find(std::string("`") + k + "`"), std::string::npos) << k;
 }
+
+TEST(Schema, ImpliedSectionAppearsOnlyWithItsSiblings) {
+  auto inner = std::make_shared<Schema>();
+  inner->add(Key::real("k", "a knob").def(2.0));
+  auto root = std::make_shared<Schema>();
+  root->add(Key::section("a", "a part", std::make_shared<Schema>()));
+  root->add(Key::section("b", "another part", std::make_shared<Schema>()));
+  root->add(Key::section("ab", "what joins them", inner).implied_by({"a", "b"}));
+  EXPECT_FALSE(scene::parse_scene("a: {}\n", "t.yaml", {}, *root).root().has("ab"));
+  const auto both = scene::parse_scene("a: {}\nb: {}\n", "t.yaml", {}, *root);
+  ASSERT_TRUE(both.root().has("ab"));
+  EXPECT_DOUBLE_EQ(both.root().section("ab").real("k"), 2.0);
+}
