@@ -1,0 +1,79 @@
+// Health monitors fail loudly with one message naming time, step, particle, place and cause; the Delta C hook
+// (eq. 4) acts on exactly the particles it is set for.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "halfeti/core/error.hpp"
+#include "halfeti/sph/fluid.hpp"
+
+using namespace halfeti::sph;
+
+namespace {
+FluidParams small_tank() {
+  FluidParams p;
+  p.tank_length = 0.10;
+  p.tank_height = 0.10;
+  p.spacing = 0.005;
+  p.water = {{0.0, 0.0, 0.10, 0.04, 0.0}};
+  return p;
+}
+}  // namespace
+
+TEST(Health, ParticleOutsideTheTankIsFatalWithOneClearMessage) {
+  FluidParams p = small_tank();
+  p.water.push_back({0.10, 0.0, 0.12, 0.02, 0.0});  // a block poking through the right wall
+  Fluid fluid(MPI_COMM_WORLD, p, nullptr);
+  try {
+    fluid.step();
+    FAIL() << "expected a NumericalError";
+  } catch (const halfeti::NumericalError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("t = "), std::string::npos) << m;
+    EXPECT_NE(m.find("step 1"), std::string::npos) << m;
+    EXPECT_NE(m.find("outside the tank"), std::string::npos) << m;
+    ASSERT_FALSE(fluid.health_events().empty());
+    EXPECT_TRUE(fluid.health_events().back().fatal);
+    EXPECT_EQ(fluid.health_events().back().kind, "outside_tank");
+  }
+}
+
+TEST(Health, BlowUpIsReportedNotWritten) {
+  FluidParams p = small_tank();
+  p.sound_speed = 0.3;  // far too slow: the column collapses and the monitors must say so
+  p.max_dt = 5e-3;
+  Fluid fluid(MPI_COMM_WORLD, p, nullptr);
+  bool thrown = false;
+  try {
+    for (int s = 0; s < 2000 && fluid.time() < 2.0; ++s) fluid.step();
+  } catch (const halfeti::NumericalError&) {
+    thrown = true;
+  }
+  // Either a fatal error or at least the density warning, never silent garbage.
+  bool warned = false;
+  for (const auto& e : fluid.health_events()) warned |= e.kind == "density_variation";
+  EXPECT_TRUE(thrown || warned);
+  EXPECT_TRUE(warned);
+}
+
+TEST(Hooks, ExtraAccelerationActsOnTheChosenParticle) {
+  const FluidParams p = small_tank();
+  Fluid a(MPI_COMM_WORLD, p, nullptr), b(MPI_COMM_WORLD, p, nullptr);
+  a.compute_forces();
+  b.compute_forces();
+  const std::int64_t chosen = 7;
+  for (std::size_t i = 0; i < b.owned_count(); ++i)
+    if (b.gid()[i] == chosen) b.extra_acceleration_y()[i] = 100.0;
+  const double dt = a.dt();
+  a.advance();
+  b.advance();
+  for (std::size_t i = 0; i < a.owned_count(); ++i) {
+    ASSERT_EQ(a.gid()[i], b.gid()[i]);
+    const double dv = b.vy()[i] - a.vy()[i];
+    if (a.gid()[i] == chosen)
+      EXPECT_NEAR(dv, 100.0 * dt, 1e-12);
+    else
+      EXPECT_EQ(dv, 0.0);
+  }
+}
