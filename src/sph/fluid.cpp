@@ -206,6 +206,7 @@ void Fluid::compute_forces() {
     k.wall_amplitude = params_.wall_repulsion * c0_ * c0_ / kernel_.h;
     k.wall_range = 0.5 * dx_;
     k.wall_pressure = params_.wall_pressure;
+    k.wall_no_slip = params_.wall_no_slip;
     k.body_x = -ag;  // the tank frame: every mass feels -a_g(t)
     k.body_y = -params_.gravity;
     momentum_rates(pv, pairs_, wall_pairs_, walls_, ghost_pairs_, ghosts_, k, rates_);

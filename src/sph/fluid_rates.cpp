@@ -62,11 +62,13 @@ void momentum_rates(const ParticleView& pv, const PairList& pairs, const PairLis
       for_each_neighbour(ghost_pairs, i, [&](int g, int q) {
         const double p_ghost = pi + rhoi * (k.body_x * ghost_pairs.ex[q] + k.body_y * ghost_pairs.ey[q]);
         double s = -std::max(pi + p_ghost, 0.0) * ghosts.volume[g] / rhoi * -ghost_pairs.f[q];
-        // eq. 8 with the mirrored velocity: only the wall-normal motion is damped (free slip)
-        const double un = ui * ghosts.nx[g] + vi * ghosts.ny[g];
-        const double e_n = ghosts.nx[g] * ghost_pairs.ex[q] + ghosts.ny[g] * ghost_pairs.ey[q];
-        const double r2 = ghost_pairs.ex[q] * ghost_pairs.ex[q] + ghost_pairs.ey[q] * ghost_pairs.ey[q];
-        s += viscosity * (-2.0 * un * e_n / (r2 + eta2)) * ghosts.volume[g] / rhoi * -ghost_pairs.f[q];
+        // eq. 8 with the ghost's velocity: mirrored (free slip, u_g - u_i = -2 (u_i.n) n, only the wall-normal
+        // motion is damped) or reversed (no slip, u_g - u_i = -2 u_i)
+        const double ex = ghost_pairs.ex[q], ey = ghost_pairs.ey[q], r2 = ex * ex + ey * ey;
+        const double du_dot_e = k.wall_no_slip ? -2.0 * (ui * ex + vi * ey)
+                                               : -2.0 * (ui * ghosts.nx[g] + vi * ghosts.ny[g]) *
+                                                     (ghosts.nx[g] * ex + ghosts.ny[g] * ey);
+        s += viscosity * (du_dot_e / (r2 + eta2)) * ghosts.volume[g] / rhoi * -ghost_pairs.f[q];
         ax += s * ghost_pairs.ex[q];
         ay += s * ghost_pairs.ey[q];
       });

@@ -39,6 +39,7 @@ struct RateConstants {
   double wall_amplitude;          // Monaghan & Kos A = wall_repulsion c0^2 / h
   double wall_range;              // distance over which the repulsion acts (the initial wall gap, dx / 2)
   bool wall_pressure;
+  bool wall_no_slip;              // ghost velocity reversed instead of mirrored in the viscous term
   double body_x, body_y;          // inertial (-a_g) and gravity body force
 };
 

@@ -56,7 +56,8 @@ struct FluidParams {
 
   // Walls (Monaghan & Kos 1999 plus the wall's pressure, see docs/sph.md)
   double wall_repulsion = 0.01;              // A = wall_repulsion * c0^2 / h
-  bool wall_pressure = true;                 // boundary integral of the kernel-truncated pressure
+  bool wall_pressure = true;                 // wall ghosts: pressure and velocity of the fluid behind the wall
+  bool wall_no_slip = false;                 // viscous term sees the walls as no-slip (default free slip)
 
   // Time step
   double cfl = 0.2;
