@@ -72,7 +72,7 @@ class Fluid {
 
   const PhaseTimers& timers() const { return timers_; }
   const std::vector<HealthEvent>& health_events() const { return events_; }
-  // Number of owned particles per rank after the last migration (diagnostics of the balance).
+  // Cell -> owning rank map of the current decomposition (diagnostics of the balance).
   const std::vector<int>& cell_owner() const { return owner_; }
 
  private:
