@@ -1,5 +1,6 @@
 #include "halfeti/app/scene_schema.hpp"
 
+#include "halfeti/app/coupling_section.hpp"
 #include "halfeti/app/fluid_section.hpp"
 #include "halfeti/app/probes.hpp"
 #include "halfeti/app/structure_section.hpp"
@@ -55,6 +56,7 @@ std::shared_ptr<const Schema> scene_schema() {
     s->add(Key::section("fluid", "the water (delta-SPH)", fluid_schema()));
     s->add(Key::section("structure", "the rubber plate (finite elements)", structure_schema()));
     s->add(Key::list("cables", "cable sets holding the plate", cable_schema()));
+    s->add(Key::section("coupling", "contact of water and plate", coupling_schema()).implied_by({"fluid", "structure"}));
     s->add(Key::list("probes", "columns of probes.csv", probe_schema()));
     return std::shared_ptr<const Schema>(s);
   }();

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "halfeti/app/coupling_section.hpp"
 #include "halfeti/app/fluid_section.hpp"
 #include "halfeti/core/error.hpp"
 #include "halfeti/core/version.hpp"
@@ -75,9 +76,16 @@ void build_parameters(const scene::Scene& scene, Parts& parts) {
   if (parts.structure_setup)
     parts.cable_setups =
         cable_setups(root, *parts.structure_setup, parts.fluid_params ? parts.fluid_params->density : 0.0);
-  if (parts.fluid_params && parts.structure_setup)
-    HALFETI_USER_ERROR("structure: a plate in water needs the fluid-structure coupling, which this build does not "
-                       "have yet; run the plate without `fluid:` or the water without `structure:`");
+  if (parts.fluid_params && parts.structure_setup) {
+    parts.coupling_params = coupling_params(root);
+    // The water fills its blocks except where the plate stands (with half a spacing around it).
+    const auto& g = parts.structure_setup->params.geometry;
+    // A quarter spacing keeps the lattice points half a spacing from the faces and drops those too near the top.
+    const double half = 0.25 * parts.fluid_params->spacing;
+    parts.fluid_params->exclusions.push_back({g.base_centre.x() - 0.5 * g.thickness - half, g.base_centre.y() - half,
+                                              g.base_centre.x() + 0.5 * g.thickness + half,
+                                              g.base_centre.y() + g.height + half});
+  }
 }
 
 namespace {
@@ -150,6 +158,10 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
     plate_fields_ = std::make_unique<io::FieldSeries>(comm_, out_dir_ + "/fields", "plate");
     plate_checkpoints_ = std::make_unique<io::FieldSeries>(comm_, out_dir_ + "/checkpoints", "plate_state");
   }
+  if (parts_.coupling_params) {
+    parts_.coupling = std::make_unique<coupling::ContactCoupling>(comm_, parts_.plate.get(), *parts_.coupling_params);
+    parts_.fluid->set_barriers(parts_.coupling->outline());
+  }
   std::vector<std::string> names;
   for (const auto& p : probes_) names.push_back(p.name);
   probe_out_ = std::make_unique<io::ProbeWriter>(out_dir_ + "/probes.csv", names, rank_ == 0);
@@ -209,7 +221,36 @@ void Simulation::step_structure(double t, double dt) {
   });
 }
 
+// One coupled step (DESIGN.md "One time step"): fluid forces and prediction, the interface gathered to the plate's
+// rank, the plate and the invaders solved together (eq. 21), the corrections handed back (eqs. 4, 22-24), then
+// the fluid finishes its step (health, migration) and the plate's new outline bars pairs across it.
+double Simulation::advance_coupled() {
+  sph::Fluid& f = *parts_.fluid;
+  f.compute_forces();
+  const double t = f.time(), dt = f.dt();
+  f.predict();
+  if (parts_.plate) {
+    const double ag = parts_.motion->acceleration(t + dt);
+    for (size_t i = 0; i < parts_.cables.size(); ++i)
+      parts_.cables[i]->set_horizontal_load(-cable_line_mass(parts_.cable_setups[i]) * ag);
+  }
+  const coupling::InterfaceParticles view{f.owned_count(), f.gid().data(),  f.x().data(),
+                                          f.y().data(),    f.vx().data(),   f.vy().data(),
+                                          f.mass().data(),
+                                          f.renormalised_density_gradient().empty() ? nullptr : f.renormalised_density_gradient().data()};
+  {
+    ScopedTimer timer(timers_, "coupling");
+    parts_.coupling->step(t, dt, view, parts_.corrections);
+  }
+  const auto& c = parts_.corrections;
+  f.apply_corrections(c.touched, c.dx.data(), c.dy.data(), c.dvx.data(), c.dvy.data(), c.drho.data());
+  f.finish();
+  f.set_barriers(parts_.coupling->outline());
+  return dt;
+}
+
 double Simulation::advance(double remaining) {
+  if (parts_.coupling) return advance_coupled();
   if (parts_.fluid) {
     parts_.fluid->step();
     return parts_.fluid->dt();
@@ -379,6 +420,12 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
   const double mass = parts_.fluid ? parts_.fluid->total_mass() : 0.0;
   PhaseTimers timers = timers_;
   if (parts_.fluid) timers.merge(parts_.fluid->timers());
+  if (parts_.coupling) {
+    PhaseTimers contact;
+    const PhaseTimers coupling_timers = parts_.coupling->timers();  // returned by value: keep it alive
+    for (const auto& [phase, seconds] : coupling_timers.all()) contact.add("contact_" + phase, seconds);
+    timers.merge(contact);
+  }
   if (parts_.plate) {
     PhaseTimers plate;
     for (const auto& [phase, seconds] : parts_.plate->timers().all()) plate.add(phase, seconds);

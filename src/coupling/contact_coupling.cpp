@@ -28,7 +28,8 @@ ContactCoupling::ContactCoupling(MPI_Comm world, structure::PlateSolver* solver,
                 "the plate solver must be given on the root rank only");
   if (solver_ != nullptr)
     system_ =
-        std::make_unique<ContactSystem>(*solver_, params_.constraint, params_.options_prefix, params_.solver);
+        std::make_unique<ContactSystem>(*solver_, params_.constraint, params_.options_prefix, params_.solver,
+                                        params_.mass_participation);
   broadcast_surface();
 }
 
@@ -80,15 +81,19 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
   invaders.reserve(gathered.size());
   const double reach = std::max(layer, thickness_);
   const SurfaceSearch before(surface_, reach);
+  std::vector<double> predicted_gap;
+  predicted_gap.reserve(gathered.size());
   for (const Invader& g : gathered) {
     const Eigen::Vector2d x(g.x, g.y);
     const ContactPoint c = before.closest_within_reach(x);  // found by the same search on the owner: in reach
     HALFETI_CHECK(c.segment >= 0, "invader " << g.gid << " out of the search's reach");
     invaders.push_back({x, g.mass, c.segment, c.projection.eta, relocated_gap(c.projection.gap, layer)});
+    predicted_gap.push_back(c.projection.gap);
   }
   // Unilateral contact by an active set: an invader the converged solve pulls towards the plate (normal force
   // C . n < 0, the plate moving away faster than the target allows) is released and Newton continues from the
-  // current iterate with the others. A released particle keeps its predicted state.
+  // current iterate with the others. A released particle keeps its predicted state, so only particles predicted
+  // outside the surface (in the layer) may be released: one predicted past it stays in the solve.
   std::vector<int> active(gathered.size());
   for (std::size_t k = 0; k < active.size(); ++k) active[k] = static_cast<int>(k);
   const auto& segments = solver_->mesh().surface;
@@ -105,7 +110,7 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
       const auto& seg = segments[static_cast<std::size_t>(subset[j].segment)];
       const Eigen::Vector2d d = solver_->position(seg.second) - solver_->position(seg.first);
       const Eigen::Vector2d n = Eigen::Vector2d(d.y(), -d.x()).normalized();
-      if (system_->forces()[j].dot(n) >= 0.0) kept.push_back(active[j]);
+      if (system_->forces()[j].dot(n) >= 0.0 || predicted_gap[active[j]] < 0.0) kept.push_back(active[j]);
     }
     if (kept.size() == active.size()) break;
     last_.released += static_cast<int>(active.size() - kept.size());

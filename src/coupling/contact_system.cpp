@@ -23,11 +23,12 @@ SurfacePolyline ContactSystem::surface(const PlateSolver& solver) {
 }
 
 ContactSystem::ContactSystem(PlateSolver& solver, ContactConstraint form, std::string options_prefix,
-                             ContactSolver method)
+                             ContactSolver method, double participation)
     : solver_(solver),
       form_(form),
       prefix_(std::move(options_prefix)),
       method_(method),
+      participation_(participation),
       rows_per_(constraint_rows(form)) {
   // The system is built on the structure's rank with the plate's node numbering as PETSc's: one structure
   // rank.
@@ -48,7 +49,9 @@ ContactSystem::LocalContact ContactSystem::local_contact(int i, const ContactInv
     lc.q[2 + c] = solver_.is_clamped(seg.first) ? -1 : 2 * seg.first + c;  // negative: PETSc skips
     lc.q[4 + c] = solver_.is_clamped(seg.second) ? -1 : 2 * seg.second + c;
   }
-  lc.participation = 2.0 * inv.mass / (dt * dt);  // mass matrix times 2 / dt^2 (section 2.3)
+  // The invader's mass participation (section 2.3): the paper's 2/dt^2 (constant acceleration over the step),
+  // or 1/dt^2, the fluid's own kick-drift step (docs/coupling.md).
+  lc.participation = participation_ * inv.mass / (dt * dt);
   lc.rhs = contact_forces(lc.terms, lambda_[i]);
   force_[i] = lc.rhs.head<2>();
   structure_force_.segment<2>(2 * seg.first) += lc.rhs.segment<2>(2);

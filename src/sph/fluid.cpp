@@ -82,6 +82,12 @@ bool Fluid::near_internal_wall(double px, double py) const {
   return false;
 }
 
+bool Fluid::excluded(double px, double py) const {
+  for (const auto& e : params_.exclusions)
+    if (px > e.x0 && px < e.x1 && py > e.y0 && py < e.y1) return true;
+  return false;
+}
+
 void Fluid::initialise_particles() {
   // Every rank lays out the same lattice with the same global ids, then keeps the particles of its cells.
   std::vector<std::int64_t> gid;
@@ -95,7 +101,7 @@ void Fluid::initialise_particles() {
       for (int i = 0; i < nx; ++i) {
         const double px = b.x0 + (i + 0.5) * dx_, py = b.y0 + (j + 0.5) * dx_;
         const double surface = b.y1 + b.surface_amplitude * std::cos(M_PI * px / params_.tank_length);
-        if (py >= surface || near_internal_wall(px, py)) continue;
+        if (py >= surface || near_internal_wall(px, py) || excluded(px, py)) continue;
         gid.push_back(next++);
         x.push_back(px);
         y.push_back(py);
@@ -222,8 +228,8 @@ void Fluid::compute_forces() {
   forces_ready_ = true;
 }
 
-void Fluid::advance() {
-  HALFETI_CHECK(forces_ready_, "Fluid::advance() needs compute_forces() first");
+void Fluid::predict() {
+  HALFETI_CHECK(forces_ready_, "Fluid::predict() needs compute_forces() first");
   forces_ready_ = false;
   {
     ScopedTimer t(timers_, "integrate");
@@ -267,6 +273,26 @@ void Fluid::advance() {
     time_ += dt_;
     ++step_;
   }
+  predicted_ = true;
+}
+
+void Fluid::apply_corrections(const std::vector<int>& touched, const double* dx, const double* dy,
+                              const double* dvx, const double* dvy, const double* drho) {
+  HALFETI_CHECK(predicted_, "Fluid::apply_corrections() belongs between predict() and finish()");
+  ScopedTimer t(timers_, "integrate");
+  for (int i : touched) {
+    HALFETI_DEBUG_CHECK(i >= 0 && i < n_owned_, "correction for particle " << i << " of " << n_owned_);
+    x_[i] += dx[i];
+    y_[i] += dy[i];
+    vx_[i] += dvx[i];
+    vy_[i] += dvy[i];
+    rho_[i] += drho[i];  // eq. 24 for the density; the pressure follows from eq. 9
+  }
+}
+
+void Fluid::finish() {
+  HALFETI_CHECK(predicted_, "Fluid::finish() needs predict() first");
+  predicted_ = false;
   {
     ScopedTimer t(timers_, "health");
     check_health();
@@ -279,6 +305,11 @@ void Fluid::advance() {
     ScopedTimer t(timers_, "migrate");
     migrate();
   }
+}
+
+void Fluid::advance() {
+  predict();
+  finish();
 }
 
 void Fluid::step() {

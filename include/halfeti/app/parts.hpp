@@ -11,6 +11,7 @@
 #include "halfeti/cable/cable_element.hpp"
 #include "halfeti/core/communicator.hpp"
 #include "halfeti/core/scene.hpp"
+#include "halfeti/coupling/contact_coupling.hpp"
 #include "halfeti/excitation/ground_motion.hpp"
 #include "halfeti/sph/fluid.hpp"
 #include "halfeti/sph/params.hpp"
@@ -34,6 +35,10 @@ struct Parts {
   std::unique_ptr<structure::PlateSolver> plate;
   std::vector<std::unique_ptr<cable::CableElement>> cables;
   bool structure_rank = false;
+
+  std::optional<coupling::CouplingParameters> coupling_params;  // the scene has water and a plate
+  std::unique_ptr<coupling::ContactCoupling> coupling;           // on every rank (collective)
+  coupling::Corrections corrections;                             // this rank's, reused every step
 
   // Throw UserError naming `who` when the scene lacks the part.
   const sph::FluidParams& require_fluid(const std::string& who) const;

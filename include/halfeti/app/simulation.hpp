@@ -43,6 +43,7 @@ class Simulation {
  private:
   void announce();
   double advance(double remaining);  // one step of every part; returns the step taken
+  double advance_coupled();          // water and plate through contact
   void sample(double t);
   void prepare_structure();
   void step_structure(double t, double dt);

@@ -37,6 +37,10 @@ enum class VelocityUpdate { kAcceleration, kDisplacement };
 struct CouplingParameters {
   ContactConstraint constraint = ContactConstraint::kTied;  // scene: coupling.constraint: tied | normal
   VelocityUpdate velocity_update = VelocityUpdate::kAcceleration;  // scene: coupling.velocity_update
+  // Mass participation factor p in p m / dt^2 (scene: coupling.mass_participation): 1 = kick_drift (the fluid's
+  // symplectic-Euler step: an impulse J moves a particle by dt J / m, so dv = C dt / m = dx / dt and the contact
+  // is inelastic), 2 = constant_acceleration (the paper's 2/dt^2: dv = 2 dx / dt, an elastic bounce).
+  double mass_participation = 1.0;
   ContactSolver solver = ContactSolver::kCondensed;  // scene: coupling.solver: condensed | saddle_point
   bool unilateral = true;  // scene: coupling.unilateral: release invaders the solve would pull (C . n < 0)
   SsosdParameters ssosd;   // scene: coupling.ssosd.{enabled,layer_ratio,velocity_floor}

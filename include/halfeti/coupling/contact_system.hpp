@@ -52,14 +52,16 @@ enum class ContactSolver { kCondensed, kSaddlePoint };
 class ContactSystem {
  public:
   // solver: the plate, on this rank (the structure's communicator has one rank in this version).
+  // participation: the invader's mass participation is participation * m / dt^2 (1: the fluid's kick-drift
+  // step, where an impulse J moves the particle by dt J / m; 2: the paper's constant acceleration over the step).
   ContactSystem(structure::PlateSolver& solver, ContactConstraint form,
                 std::string options_prefix = "structure_contact_",
-                ContactSolver method = ContactSolver::kCondensed);
+                ContactSolver method = ContactSolver::kCondensed, double participation = 1.0);
   ContactSystem(const ContactSystem&) = delete;
   ContactSystem& operator=(const ContactSystem&) = delete;
 
   // Newton on eq. 21 between solver.begin_step()/begin_static() and solver.end_step(). dt sets the mass
-  // participation 2 m / dt^2. `when` names the time in error messages. NumericalError on non-convergence.
+  // participation (participation * m / dt^2). `when` names the time in error messages. NumericalError on non-convergence.
   ContactSolveReport solve(const std::vector<ContactInvader>& invaders, double dt, double when);
 
   // After solve(): final invader positions, contact forces on them (N/m), and the contact forces on the
@@ -79,7 +81,7 @@ class ContactSystem {
   struct LocalContact {
     PetscInt q[6];  // rows of (y, F, S) in the saddle-point numbering; -1 for clamped plate dofs
     ConstraintTerms terms;
-    double participation = 0.0;       // 2 m / dt^2
+    double participation = 0.0;       // participation * m / dt^2
     Eigen::Matrix<double, 6, 1> rhs;  // A^T lambda, minus the particle's inertia on its rows
   };
   LocalContact local_contact(int i, const ContactInvader& inv, double dt);
@@ -97,6 +99,7 @@ class ContactSystem {
   ContactConstraint form_;
   std::string prefix_;
   ContactSolver method_;
+  double participation_ = 1.0;
   // Condensed path: per invader B^-1 C and B^-1 b_z of its eliminated (dy, dl) block (contact_condensed.cpp).
   struct Eliminated {
     Eigen::Matrix4d binv_c = Eigen::Matrix4d::Zero();

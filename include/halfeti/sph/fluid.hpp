@@ -33,7 +33,16 @@ class Fluid {
 
   void step();
   void compute_forces();
-  void advance();
+  void advance();  // predict() then finish()
+  // advance() in two halves, for the contact coupling between them (DESIGN.md steps 2 and 6): predict() kicks,
+  // updates the density and drifts (time += dt); finish() checks health, rebalances and migrates. Between them
+  // the owned particles keep their indices, so per-particle corrections can be applied.
+  void predict();
+  void finish();
+  // Adds the coupling's corrections (position, velocity, density: eqs. 4, 22, 24) to the owned particles listed
+  // in `touched`; each array holds one entry per owned particle.
+  void apply_corrections(const std::vector<int>& touched, const double* dx, const double* dy, const double* dvx,
+                         const double* dvy, const double* drho);
 
   double time() const { return time_; }
   long step_count() const { return step_; }
@@ -53,6 +62,10 @@ class Fluid {
   const std::vector<double>& vy() const { return vy_; }
   const std::vector<double>& rho() const { return rho_; }
   std::vector<double> pressure() const;  // owned particles, eq. 9
+  const std::vector<double>& mass() const { return mass_; }  // kg/m per unit depth
+  // The renormalised density gradient (eq. 6) of the last compute_forces(), 2 per particle, owned first; empty
+  // for the standard scheme.
+  const std::vector<double>& renormalised_density_gradient() const { return grad_rho_; }
 
   // Delta C (eq. 4) hook: extra acceleration per owned particle, zeroed by compute_forces() and added by advance().
   std::vector<double>& extra_acceleration_x() { return extra_ax_; }
@@ -77,6 +90,7 @@ class Fluid {
 
  private:
   void initialise_particles();
+  bool excluded(double px, double py) const;
   bool near_internal_wall(double x, double y) const;
   void sort_owned_by_cell();
   void exchange_halo();
@@ -113,7 +127,7 @@ class Fluid {
 
   double time_ = 0.0, dt_ = 0.0;
   long step_ = 0;
-  bool forces_ready_ = false;
+  bool forces_ready_ = false, predicted_ = false;
   PhaseTimers timers_;
   std::vector<HealthEvent> events_;
   std::vector<std::string> active_warnings_;

@@ -18,6 +18,11 @@ struct WaterBlock {
   double surface_amplitude = 0.0;
 };
 
+// A rectangle the water leaves empty (where the plate stands): lattice points inside it are not laid.
+struct Exclusion {
+  double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;
+};
+
 // A rigid internal wall: a line of repulsive particles between two end points that pushes on both sides; fluid
 // pairs across it do not interact. Water-block lattice points closer than dx/2 to it are left out.
 struct InternalWall {
@@ -31,6 +36,7 @@ struct FluidParams {
   bool lid = false;
   std::vector<WaterBlock> water;
   std::vector<InternalWall> internal_walls;
+  std::vector<Exclusion> exclusions;
 
   // Discretisation
   double spacing = 0.0015;                   // dx [m]

@@ -117,5 +117,16 @@ TEST(Commands, SceneReferencePageIsCurrent) {
   ASSERT_EQ(status_of("reference"), 0);
   const std::string generated = file_text(kDir + "/out.txt");
   const std::string checked_in = file_text(std::string(HALFETI_SOURCE_DIR) + "/docs/scene-reference.md");
-  EXPECT_EQ(generated, checked_in) << "docs/scene-reference.md is stale: regenerate it (see the comment above)";
+  if (generated == checked_in) return;
+  std::istringstream a(generated), b(checked_in);
+  std::string la, lb;
+  int line = 0;
+  while (true) {
+    ++line;
+    const bool more_a = static_cast<bool>(std::getline(a, la)), more_b = static_cast<bool>(std::getline(b, lb));
+    if (!more_a && !more_b) break;
+    if (la != lb || more_a != more_b) break;
+  }
+  ADD_FAILURE() << "docs/scene-reference.md is stale (regenerate it, see the comment above); first difference at line "
+                << line << ":\n  generated:  " << la << "\n  checked in: " << lb;
 }

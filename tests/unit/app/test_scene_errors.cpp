@@ -32,7 +32,7 @@ const Case kCases[] = {
     {"near-miss key", "scene: {name: s, end_tme: 1}\n", "bad.yaml:1:18: unknown key 'scene.end_tme'; did you mean 'end_time'?"},
     {"unknown section", "scene: {name: s, end_time: 1}\nwather: {}\n",
      "bad.yaml:2:1: unknown key 'wather'; expected one of: scene, output, gravity, tank, excitation, fluid, "
-     "structure, cables, probes"},
+     "structure, cables, coupling, probes"},
     {"near-miss section", "scene: {name: s, end_time: 1}\nfluids: {}\n",
      "bad.yaml:2:1: unknown key 'fluids'; did you mean 'fluid'?"},
     {"unknown choice", "scene: {name: s, end_time: 1}\nexcitation: {kind: sine}\n",

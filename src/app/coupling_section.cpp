@@ -1,0 +1,103 @@
+#include "halfeti/app/coupling_section.hpp"
+
+#include "halfeti/core/registry.hpp"
+
+namespace halfeti::app {
+
+using scene::Key;
+using scene::Schema;
+
+namespace {
+
+const Registry<coupling::ContactConstraint>& constraint_registry() {
+  static const Registry<coupling::ContactConstraint> r = [] {
+    Registry<coupling::ContactConstraint> c;
+    c.add("tied", "eq. 19 as a vector: the particle is held normally and tangentially (no slip)", nullptr,
+          coupling::ContactConstraint::kTied);
+    c.add("normal", "frictionless: only the normal overlap is constrained", nullptr,
+          coupling::ContactConstraint::kNormal);
+    return c;
+  }();
+  return r;
+}
+
+const Registry<coupling::ContactSolver>& solver_registry() {
+  static const Registry<coupling::ContactSolver> r = [] {
+    Registry<coupling::ContactSolver> s;
+    s.add("condensed", "the invaders' unknowns eliminated exactly onto the plate's system (fastest)", nullptr,
+          coupling::ContactSolver::kCondensed);
+    s.add("saddle_point", "the full saddle-point matrix of eq. 21 (MUMPS, or fieldsplit by PETSc options)", nullptr,
+          coupling::ContactSolver::kSaddlePoint);
+    return s;
+  }();
+  return r;
+}
+
+const Registry<coupling::VelocityUpdate>& velocity_registry() {
+  static const Registry<coupling::VelocityUpdate> r = [] {
+    Registry<coupling::VelocityUpdate> v;
+    v.add("acceleration", "dv = C dt / m: the contact acceleration of eq. 4 held over the step", nullptr,
+          coupling::VelocityUpdate::kAcceleration);
+    v.add("displacement", "dv = dx / dt: the velocity of the relocation itself", nullptr,
+          coupling::VelocityUpdate::kDisplacement);
+    return v;
+  }();
+  return r;
+}
+
+std::shared_ptr<Schema> ssosd_schema() {
+  auto s = std::make_shared<Schema>(
+      "Shifting the surface of the structural domain (eqs. 22-23): particles in a layer of thickness "
+      "L = layer_ratio * max(u_max, velocity_floor) * dt outside the plate are relocated by an exponential law.");
+  s->add(Key::boolean("enabled", "false: invaders are particles past the surface, pushed exactly onto it").def(true));
+  s->add(Key::real("layer_ratio", "L / (u_max dt), eq. 23's range").def(10.0).in(5.0, 50.0));
+  s->add(Key::real("velocity_floor", "smallest u_max used for L (still water keeps a layer)", "m/s").def(0.5)
+             .positive());
+  return s;
+}
+
+}  // namespace
+
+std::shared_ptr<const Schema> coupling_schema() {
+  static const std::shared_ptr<const Schema> schema = [] {
+    auto s = std::make_shared<Schema>(
+        "Contact coupling of water and plate (section 2.3); used when the scene has both fluid and structure.");
+    s->add(Key::choice("constraint", "contact constraint per invader", constraint_registry().names()).def("tied"));
+    s->add(Key::choice("solver", "how eq. 21 is solved", solver_registry().names()).def("condensed"));
+    s->add(Key::choice("velocity_update", "how the contact changes an invader's velocity",
+                       velocity_registry().names())
+               .def("acceleration"));
+    s->add(Key::choice("mass_participation",
+                       "invader mass participation in eq. 21: kick_drift (m/dt^2, consistent with the fluid's step, "
+                       "inelastic) or constant_acceleration (the paper's 2m/dt^2)",
+                       {"kick_drift", "constant_acceleration"})
+               .def("kick_drift"));
+    s->add(Key::boolean("unilateral", "release invaders the solve would pull towards the plate").def(true));
+    s->add(Key::section("ssosd", "the intermediate layer", ssosd_schema()).always());
+    s->add(Key::real("inside_tolerance", "depth past the surface at which a particle left inside stops the run",
+                     "m")
+               .def(1e-9)
+               .positive());
+    return std::shared_ptr<const Schema>(s);
+  }();
+  return schema;
+}
+
+coupling::CouplingParameters coupling_params(const scene::Node& root) {
+  const scene::Node c = root.section("coupling");
+  coupling::CouplingParameters p;
+  p.constraint = constraint_registry().get(c.string("constraint")).make;
+  p.solver = solver_registry().get(c.string("solver")).make;
+  p.velocity_update = velocity_registry().get(c.string("velocity_update")).make;
+  p.unilateral = c.boolean("unilateral");
+  p.mass_participation = c.string("mass_participation") == "kick_drift" ? 1.0 : 2.0;
+  const scene::Node s = c.section("ssosd");
+  p.ssosd.enabled = s.boolean("enabled");
+  p.ssosd.layer_ratio = s.real("layer_ratio");
+  p.ssosd.velocity_floor = s.real("velocity_floor");
+  p.inside_tolerance = c.real("inside_tolerance");
+  coupling::validate(p);
+  return p;
+}
+
+}  // namespace halfeti::app
