@@ -59,9 +59,32 @@ void NeighbourSearch::set_fixed_points(int set, const std::vector<double>& px, c
   }
 }
 
+void NeighbourSearch::set_barriers(std::vector<Barrier> barriers) {
+  barriers_ = std::move(barriers);
+  const int cells = grid_.cell_count();
+  barrier_start_.assign(cells + 1, 0);
+  barrier_items_.clear();
+  const double s = kernel_.support();
+  const auto for_cells = [&](const Barrier& b, auto&& fn) {
+    const int x0 = grid_.ix(std::min(b.xa, b.xb) - s), x1 = grid_.ix(std::max(b.xa, b.xb) + s);
+    const int y0 = grid_.iy(std::min(b.ya, b.yb) - s), y1 = grid_.iy(std::max(b.ya, b.yb) + s);
+    for (int cy = y0; cy <= y1; ++cy)
+      for (int cx = x0; cx <= x1; ++cx) fn(cy * grid_.nx + cx);
+  };
+  for (const auto& b : barriers_) for_cells(b, [&](int c) { ++barrier_start_[c + 1]; });
+  for (int c = 0; c < cells; ++c) barrier_start_[c + 1] += barrier_start_[c];
+  barrier_items_.resize(static_cast<std::size_t>(barrier_start_[cells]));
+  std::vector<int> fill(barrier_start_.begin(), barrier_start_.end() - 1);
+  for (int k = 0; k < static_cast<int>(barriers_.size()); ++k)
+    for_cells(barriers_[k], [&](int c) { barrier_items_[fill[c]++] = k; });
+}
+
 bool NeighbourSearch::crosses_barrier(double xi, double yi, double xj, double yj) const {
-  for (const auto& b : barriers_)
+  const int c = grid_.cell_of(xi, yi);
+  for (int k = barrier_start_[c]; k < barrier_start_[c + 1]; ++k) {
+    const Barrier& b = barriers_[barrier_items_[k]];
     if (segments_cross(xi, yi, xj, yj, b.xa, b.ya, b.xb, b.yb)) return true;
+  }
   return false;
 }
 

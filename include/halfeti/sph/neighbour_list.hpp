@@ -66,7 +66,10 @@ class NeighbourSearch {
   // other fixed points are never seen across a barrier.
   void set_fixed_points(int set, const std::vector<double>& px, const std::vector<double>& py,
                         const std::vector<int>& internal = {});
-  void set_barriers(std::vector<Barrier> barriers) { barriers_ = std::move(barriers); }
+  // Barriers are indexed by cell: a pair can only cross a barrier that comes within one support of particle i,
+  // so each cell lists the barriers whose box, grown by the support, overlaps it (the plate's outline changes
+  // every step; indexing it costs far less than testing every pair against every segment).
+  void set_barriers(std::vector<Barrier> barriers);
   const std::vector<Barrier>& barriers() const { return barriers_; }
 
   // Fluid pairs for owned particles [0, n_owned) among all local particles [0, n_local).
@@ -93,6 +96,7 @@ class NeighbourSearch {
     std::vector<int> internal;
   };
   FixedBins fixed_[2];
+  std::vector<int> barrier_start_, barrier_items_;  // per cell: indices into barriers_ (CSR)
   std::vector<Barrier> barriers_;
   double min_distance_ = 0.0;
 };
