@@ -1,5 +1,5 @@
 // Dam break (validation ladder step 2): surge front of a 2D water column a x 2a, a = 2.25 in, against Martin &
-// Moyce (1952), /work/shared/data. Reports the error at every data point and checks the RMS relative error.
+// Moyce (1952), inputs/validation/data. Reports the error at every data point and checks the RMS relative error.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -35,7 +35,7 @@ std::vector<std::pair<double, double>> read_data(const std::string& path) {
 }  // namespace
 
 TEST(DamBreak, SurgeFrontFollowsMartinMoyce) {
-  const auto data = read_data("/work/shared/data/dambreak_martin_moyce_1952_a2p25in.csv");
+  const auto data = read_data(std::string(HALFETI_SOURCE_DIR) + "/inputs/validation/data/dambreak_martin_moyce_1952_a2p25in.csv");
   ASSERT_FALSE(data.empty());
   const double a = 0.05715;
   FluidParams p;
