@@ -10,38 +10,30 @@ using scene::Schema;
 namespace {
 
 const Registry<coupling::ContactConstraint>& constraint_registry() {
-  static const Registry<coupling::ContactConstraint> r = [] {
-    Registry<coupling::ContactConstraint> c;
-    c.add("tied", "eq. 19 as a vector: the particle is held normally and tangentially (no slip)", nullptr,
-          coupling::ContactConstraint::kTied);
-    c.add("normal", "frictionless: only the normal overlap is constrained", nullptr,
-          coupling::ContactConstraint::kNormal);
-    return c;
-  }();
+  static const auto r = named_values<coupling::ContactConstraint>({
+      {"tied", "eq. 19 as a vector: the particle is held normally and tangentially (no slip)",
+       coupling::ContactConstraint::kTied},
+      {"normal", "frictionless: only the normal overlap is constrained", coupling::ContactConstraint::kNormal},
+  });
   return r;
 }
 
 const Registry<coupling::ContactSolver>& solver_registry() {
-  static const Registry<coupling::ContactSolver> r = [] {
-    Registry<coupling::ContactSolver> s;
-    s.add("condensed", "the invaders' unknowns eliminated exactly onto the plate's system (fastest)", nullptr,
-          coupling::ContactSolver::kCondensed);
-    s.add("saddle_point", "the full saddle-point matrix of eq. 21 (MUMPS, or fieldsplit by PETSc options)", nullptr,
-          coupling::ContactSolver::kSaddlePoint);
-    return s;
-  }();
+  static const auto r = named_values<coupling::ContactSolver>({
+      {"condensed", "the invaders' unknowns eliminated exactly onto the plate's system (fastest)",
+       coupling::ContactSolver::kCondensed},
+      {"saddle_point", "the full saddle-point matrix of eq. 21 (MUMPS, or fieldsplit by PETSc options)",
+       coupling::ContactSolver::kSaddlePoint},
+  });
   return r;
 }
 
 const Registry<coupling::VelocityUpdate>& velocity_registry() {
-  static const Registry<coupling::VelocityUpdate> r = [] {
-    Registry<coupling::VelocityUpdate> v;
-    v.add("acceleration", "dv = C dt / m: the contact acceleration of eq. 4 held over the step", nullptr,
-          coupling::VelocityUpdate::kAcceleration);
-    v.add("displacement", "dv = dx / dt: the velocity of the relocation itself", nullptr,
-          coupling::VelocityUpdate::kDisplacement);
-    return v;
-  }();
+  static const auto r = named_values<coupling::VelocityUpdate>({
+      {"acceleration", "dv = C dt / m: the contact acceleration of eq. 4 held over the step",
+       coupling::VelocityUpdate::kAcceleration},
+      {"displacement", "dv = dx / dt: the velocity of the relocation itself", coupling::VelocityUpdate::kDisplacement},
+  });
   return r;
 }
 

@@ -12,23 +12,18 @@ namespace {
 
 // Named choices of the fluid: each resolves through its own registry (the entry's "factory" is the value).
 const Registry<sph::KernelKind>& kernel_registry() {
-  static const Registry<sph::KernelKind> r = [] {
-    Registry<sph::KernelKind> k;
-    k.add("cubic_spline", "Monaghan's cubic spline, support 2h (the paper)", nullptr, sph::KernelKind::kCubicSpline);
-    k.add("wendland_c2", "Wendland C2, support 2h", nullptr, sph::KernelKind::kWendlandC2);
-    return k;
-  }();
+  static const auto r = named_values<sph::KernelKind>({
+      {"cubic_spline", "Monaghan's cubic spline, support 2h (the paper)", sph::KernelKind::kCubicSpline},
+      {"wendland_c2", "Wendland C2, support 2h", sph::KernelKind::kWendlandC2},
+  });
   return r;
 }
 
 const Registry<sph::Scheme>& scheme_registry() {
-  static const Registry<sph::Scheme> r = [] {
-    Registry<sph::Scheme> s;
-    s.add("delta", "delta-SPH: density diffusion on (eqs. 3, 5-7)", nullptr, sph::Scheme::kDeltaSph);
-    s.add("standard", "standard SPH: no density diffusion (the paper's Figs. 13-15 comparison)", nullptr,
-          sph::Scheme::kStandard);
-    return s;
-  }();
+  static const auto r = named_values<sph::Scheme>({
+      {"delta", "delta-SPH: density diffusion on (eqs. 3, 5-7)", sph::Scheme::kDeltaSph},
+      {"standard", "standard SPH: no density diffusion (the paper's Figs. 13-15 comparison)", sph::Scheme::kStandard},
+  });
   return r;
 }
 

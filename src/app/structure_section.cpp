@@ -15,24 +15,18 @@ using scene::Schema;
 namespace {
 
 const Registry<structure::MaterialModel>& material_registry() {
-  static const Registry<structure::MaterialModel> r = [] {
-    Registry<structure::MaterialModel> m;
-    m.add("neo_hookean", "compressible Neo-Hookean (large strains)", nullptr, structure::MaterialModel::kNeoHookean);
-    m.add("saint_venant_kirchhoff", "St. Venant-Kirchhoff (moderate strains)", nullptr,
-          structure::MaterialModel::kStVenantKirchhoff);
-    return m;
-  }();
+  static const auto r = named_values<structure::MaterialModel>({
+      {"neo_hookean", "compressible Neo-Hookean (large strains)", structure::MaterialModel::kNeoHookean},
+      {"saint_venant_kirchhoff", "St. Venant-Kirchhoff (moderate strains)", structure::MaterialModel::kStVenantKirchhoff},
+  });
   return r;
 }
 
 const Registry<structure::PlaneHypothesis>& hypothesis_registry() {
-  static const Registry<structure::PlaneHypothesis> r = [] {
-    Registry<structure::PlaneHypothesis> h;
-    h.add("plane_strain", "the plate spans the tank's width (default)", nullptr,
-          structure::PlaneHypothesis::kPlaneStrain);
-    h.add("plane_stress", "a thin free-edged strip", nullptr, structure::PlaneHypothesis::kPlaneStress);
-    return h;
-  }();
+  static const auto r = named_values<structure::PlaneHypothesis>({
+      {"plane_strain", "the plate spans the tank's width (default)", structure::PlaneHypothesis::kPlaneStrain},
+      {"plane_stress", "a thin free-edged strip", structure::PlaneHypothesis::kPlaneStress},
+  });
   return r;
 }
 

@@ -169,24 +169,12 @@ std::pair<double, double> ContactSystem::assemble(const std::vector<ContactInvad
 
 void ContactSystem::solve_linear(double when) {
   ScopedTimer timer(timers_, "solve");
-  HALFETI_PETSC_CALL(KSPSetOperators(ksp_.get(), matrix_.get(), matrix_.get()));
-  HALFETI_PETSC_CALL(KSPSolve(ksp_.get(), rhs_.get(), solution_.get()));
-  KSPConvergedReason reason;
-  HALFETI_PETSC_CALL(KSPGetConvergedReason(ksp_.get(), &reason));
-  if (reason < 0) {
-    std::string detail;
-    if (reason == KSP_DIVERGED_PC_FAILED) {
-      PC pc = nullptr;
-      PCFailedReason pc_reason;
-      HALFETI_PETSC_CALL(KSPGetPC(ksp_.get(), &pc));
-      HALFETI_PETSC_CALL(PCGetFailedReason(pc, &pc_reason));
-      detail = std::string(" (preconditioner: ") + PCFailedReasons[pc_reason] + ")";
-    }
+  const KSPConvergedReason reason = structure::solve_with(ksp_.get(), matrix_.get(), rhs_.get(), solution_.get());
+  if (reason < 0)
     HALFETI_NUMERICAL_ERROR("coupling: contact solve (eq. 21) failed at t = "
-                            << when << " s with " << n_inv_ << " invaders: KSP reason "
-                            << KSPConvergedReasons[reason] << detail << "; the default is -" << prefix_
-                            << "pc_type lu -" << prefix_ << "pc_factor_mat_solver_type mumps");
-  }
+                            << when << " s with " << n_inv_ << " invaders: " << structure::ksp_failure(ksp_.get(), reason)
+                            << "; the default is -" << prefix_ << "pc_type lu -" << prefix_
+                            << "pc_factor_mat_solver_type mumps");
 }
 
 ContactSolveReport ContactSystem::solve(const std::vector<ContactInvader>& invaders, double dt, double when) {

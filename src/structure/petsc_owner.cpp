@@ -4,6 +4,30 @@
 
 #include "halfeti/core/error.hpp"
 
+namespace halfeti::structure {
+
+KSPConvergedReason solve_with(KSP ksp, Mat matrix, Vec rhs, Vec solution) {
+  HALFETI_PETSC_CALL(KSPSetOperators(ksp, matrix, matrix));
+  HALFETI_PETSC_CALL(KSPSolve(ksp, rhs, solution));
+  KSPConvergedReason reason;
+  HALFETI_PETSC_CALL(KSPGetConvergedReason(ksp, &reason));
+  return reason;
+}
+
+std::string ksp_failure(KSP ksp, KSPConvergedReason reason) {
+  std::string text = std::string("KSP reason ") + KSPConvergedReasons[reason];
+  if (reason == KSP_DIVERGED_PC_FAILED) {
+    PC pc = nullptr;
+    PCFailedReason pc_reason;
+    HALFETI_PETSC_CALL(KSPGetPC(ksp, &pc));
+    HALFETI_PETSC_CALL(PCGetFailedReason(pc, &pc_reason));
+    text += std::string(" (preconditioner: ") + PCFailedReasons[pc_reason] + ")";
+  }
+  return text;
+}
+
+}  // namespace halfeti::structure
+
 namespace halfeti::structure::detail {
 
 void raise_petsc_error(PetscErrorCode code, const char* call, const char* func, const char* file, int line) {

@@ -173,23 +173,10 @@ void PlateSolver::begin_static(double t) {
 
 Vec PlateSolver::solve_newton_increment() {
   ScopedTimer timer(timers_, "structure_solve");
-  HALFETI_PETSC_CALL(KSPSetOperators(ksp_.get(), matrix_.get(), matrix_.get()));
-  HALFETI_PETSC_CALL(KSPSolve(ksp_.get(), rhs_.get(), solution_.get()));
-  KSPConvergedReason reason;
-  HALFETI_PETSC_CALL(KSPGetConvergedReason(ksp_.get(), &reason));
-  if (reason < 0) {
-    std::string detail;
-    if (reason == KSP_DIVERGED_PC_FAILED) {
-      PC pc = nullptr;
-      PCFailedReason pc_reason;
-      HALFETI_PETSC_CALL(KSPGetPC(ksp_.get(), &pc));
-      HALFETI_PETSC_CALL(PCGetFailedReason(pc, &pc_reason));
-      detail = std::string(" (preconditioner: ") + PCFailedReasons[pc_reason] + ")";
-    }
-    HALFETI_NUMERICAL_ERROR("structure: KSP solve failed at t = " << time_ << " s, reason "
-                                                                  << KSPConvergedReasons[reason] << detail
+  const KSPConvergedReason reason = solve_with(ksp_.get(), matrix_.get(), rhs_.get(), solution_.get());
+  if (reason < 0)
+    HALFETI_NUMERICAL_ERROR("structure: KSP solve failed at t = " << time_ << " s, " << ksp_failure(ksp_.get(), reason)
                                                                   << "; try -structure_pc_type lu");
-  }
   return solution_.get();
 }
 

@@ -6,7 +6,9 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <initializer_list>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "halfeti/core/error.hpp"
@@ -61,5 +63,13 @@ class Registry {
   std::vector<std::string> names_;
   std::map<std::string, Entry> entries_;
 };
+
+// A registry of plain named values (kernel, scheme, material ...): each entry's "factory" is the value itself.
+template <class T>
+Registry<T> named_values(std::initializer_list<std::tuple<const char*, const char*, T>> entries) {
+  Registry<T> r;
+  for (const auto& [name, doc, value] : entries) r.add(name, doc, nullptr, value);
+  return r;
+}
 
 }  // namespace halfeti

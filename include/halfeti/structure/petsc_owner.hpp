@@ -5,6 +5,7 @@
 
 #include <petscksp.h>
 
+#include <string>
 #include <utility>
 
 namespace halfeti::structure {
@@ -23,6 +24,12 @@ namespace detail {
       ::halfeti::structure::detail::raise_petsc_error(halfeti_petsc_code_, #call, __func__, __FILE__, \
                                                       __LINE__);                                      \
   } while (0)
+
+// Solves with `ksp` and returns the converged reason; a negative reason is returned, not thrown, so the caller
+// can name the context. ksp_failure() spells a failed reason out, with the preconditioner's own reason when the
+// preconditioner failed.
+KSPConvergedReason solve_with(KSP ksp, Mat matrix, Vec rhs, Vec solution);
+std::string ksp_failure(KSP ksp, KSPConvergedReason reason);
 
 // Owns one PETSc handle (Mat, Vec, KSP, ...). Destroy is PETSc's XDestroy; it runs only while PETSc is alive.
 template <typename Handle, PetscErrorCode (*Destroy)(Handle*)>
