@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# tools/plot and tools/paper on a short run of the plate-and-cables scene: one chart per probe, the paper's tension
+# chart, and a comparison table that reads the initial tension (135 kPa) and marks the other scenes "not run".
+set -euo pipefail
+root=$1
+work=$2/plot_paper_test
+rm -rf "$work" && mkdir -p "$work/paper"
+"$root/build/src/app/halfeti" run "$root/inputs/validation/plate_cables.yaml" --out "$work/paper/cosine_cable" \
+  --set scene.end_time=0.02 --set output.field_interval=0.01 >/dev/null
+/usr/bin/python3 "$root/tools/plot" "$work/paper/cosine_cable" >/dev/null
+for probe in tip_x left_stress right_stress right_slack; do
+  [ -s "$work/paper/cosine_cable/plots/probe_$probe.png" ] || { echo "no chart for $probe"; exit 1; }
+done
+/usr/bin/python3 "$root/tools/paper" figures "$work/paper" >/dev/null
+[ -s "$work/paper/paper_figures/tension_cosine.png" ] || { echo "no tension chart"; exit 1; }
+/usr/bin/python3 "$root/tools/paper" compare "$work/paper" --markdown "$work/comparison.md" >/dev/null
+grep -q "| cosine_cable: initial cable tension \[kPa\] | 135 | 135 | -0 % |" "$work/comparison.md" \
+  || { echo "initial tension row wrong:"; grep "initial cable" "$work/comparison.md"; exit 1; }
+grep -q "| sine_free | not run |" "$work/comparison.md" || { echo "missing runs not marked"; exit 1; }
+if /usr/bin/python3 "$root/tools/plot" "$work/nowhere" 2>/dev/null; then echo "a missing run was accepted"; exit 1; fi
+echo "plot and paper: ok"
