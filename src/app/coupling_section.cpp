@@ -65,6 +65,10 @@ std::shared_ptr<const Schema> coupling_schema() {
                        {"kick_drift", "constant_acceleration"})
                .def("kick_drift"));
     s->add(Key::boolean("unilateral", "release invaders the solve would pull towards the plate").def(true));
+    s->add(Key::boolean("plate_wall",
+                        "the plate's faces enter the SPH sums as a moving wall (pressure ghosts, their force on the "
+                        "plate); false: the paper's form, contact only")
+               .def(true));
     s->add(Key::section("ssosd", "the intermediate layer", ssosd_schema()).always());
     s->add(Key::real("inside_tolerance", "depth past the surface at which a particle left inside stops the run",
                      "m")
@@ -82,6 +86,7 @@ coupling::CouplingParameters coupling_params(const scene::Node& root) {
   p.solver = solver_registry().get(c.string("solver")).make;
   p.velocity_update = velocity_registry().get(c.string("velocity_update")).make;
   p.unilateral = c.boolean("unilateral");
+  p.plate_wall = c.boolean("plate_wall");
   p.mass_participation = c.string("mass_participation") == "kick_drift" ? 1.0 : 2.0;
   const scene::Node s = c.section("ssosd");
   p.ssosd.enabled = s.boolean("enabled");

@@ -161,6 +161,7 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
   if (parts_.coupling_params) {
     parts_.coupling = std::make_unique<coupling::ContactCoupling>(comm_, parts_.plate.get(), *parts_.coupling_params);
     parts_.fluid->set_barriers(parts_.coupling->outline());
+    if (parts_.coupling_params->plate_wall) parts_.fluid->set_plate_outline(parts_.coupling->plate_outline());
   }
   std::vector<std::string> names;
   for (const auto& p : probes_) names.push_back(p.name);
@@ -228,6 +229,8 @@ double Simulation::advance_coupled() {
   sph::Fluid& f = *parts_.fluid;
   f.compute_forces();
   const double t = f.time(), dt = f.dt();
+  const bool plate_wall = parts_.coupling->parameters().plate_wall;
+  if (plate_wall) parts_.coupling->set_fluid_loads(f.plate_wall_loads());  // the water's wall force on the plate
   f.predict();
   if (parts_.plate) {
     const double ag = parts_.motion->acceleration(t + dt);
@@ -246,6 +249,16 @@ double Simulation::advance_coupled() {
   f.apply_corrections(c.touched, c.dx.data(), c.dy.data(), c.dvx.data(), c.dvy.data(), c.drho.data());
   f.finish();
   f.set_barriers(parts_.coupling->outline());
+  if (plate_wall) f.set_plate_outline(parts_.coupling->plate_outline());
+  if (std::getenv("HALFETI_DEBUG_COUPLING") && f.step_count() % 20 == 0) {
+    const auto& r = parts_.coupling->last_step();
+    int rank = 0;
+    MPI_Comm_rank(comm_, &rank);
+    if (rank == 0)
+      std::fprintf(stderr, "DBGC t=%.5f inv=%d rel=%d L=%.3g umax=%.3g Fc=(%.4g,%.4g) maxF=%.3g Fw=(%.4g,%.4g)\n", f.time(),
+                   r.invaders, r.released, r.layer, r.u_max, r.force_x, r.force_y, r.max_force,
+                   parts_.coupling->fluid_load_x(), parts_.coupling->fluid_load_y());
+  }
   return dt;
 }
 

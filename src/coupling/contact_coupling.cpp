@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 #include "halfeti/core/error.hpp"
@@ -31,6 +32,72 @@ ContactCoupling::ContactCoupling(MPI_Comm world, structure::PlateSolver* solver,
         std::make_unique<ContactSystem>(*solver_, params_.constraint, params_.options_prefix, params_.solver,
                                         params_.mass_participation);
   broadcast_surface();
+  // The plate's thickness (its base corners are the surface's ends): how deep inside the plate the search looks.
+  if (surface_.points.size() >= 2) thickness_ = (surface_.points.front() - surface_.points.back()).norm();
+  if (solver_ != nullptr) {
+    for (int node : surface_.nodes) {
+      loads_.push_back(std::make_unique<PointLoad>());
+      loads_.back()->node = node;
+      solver_->add_nodal_element(loads_.back().get());
+    }
+  }
+}
+
+sph::PlateOutline ContactCoupling::plate_outline() const {
+  sph::PlateOutline o;
+  for (std::size_t k = 0; k < surface_.points.size(); ++k) {
+    o.x.push_back(surface_.points[k].x());
+    o.y.push_back(surface_.points[k].y());
+    o.vx.push_back(surface_motion_[4 * k]);
+    o.vy.push_back(surface_motion_[4 * k + 1]);
+    o.ax.push_back(surface_motion_[4 * k + 2]);
+    o.ay.push_back(surface_motion_[4 * k + 3]);
+  }
+  return o;
+}
+
+void ContactCoupling::set_fluid_loads(const std::vector<sph::PlateWallLoad>& local) {
+  ScopedTimer timer(timers_, "fluid_load");
+  const int size = comm_.size();
+  const int n = static_cast<int>(local.size());
+  std::vector<int> counts(size), displs(size);
+  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, root_, comm_.get());
+  // Packed as 4 doubles: gid (exact below 2^53), point, fx, fy.
+  std::vector<double> mine;
+  mine.reserve(4 * local.size());
+  for (const auto& l : local) mine.insert(mine.end(), {double(l.gid), double(l.point), l.fx, l.fy});
+  std::vector<double> all;
+  int total = 0;
+  if (rank_ == root_) {
+    for (int r = 0; r < size; ++r) {
+      displs[r] = 4 * total;
+      total += counts[r];
+      counts[r] *= 4;
+    }
+    all.resize(4 * static_cast<std::size_t>(total));
+  }
+  MPI_Gatherv(mine.data(), 4 * n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, root_,
+              comm_.get());
+  double sum[2] = {0.0, 0.0};
+  if (rank_ == root_) {
+    std::vector<int> order(total);
+    for (int k = 0; k < total; ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+      return all[4 * a] != all[4 * b] ? all[4 * a] < all[4 * b] : all[4 * a + 1] < all[4 * b + 1];
+    });
+    for (auto& l : loads_) l->force.setZero();
+    for (int k : order) {  // gid order: a fixed summation order on any number of ranks
+      auto& l = *loads_[static_cast<std::size_t>(all[4 * k + 1])];
+      l.force += Eigen::Vector2d(all[4 * k + 2], all[4 * k + 3]);
+    }
+    for (const auto& l : loads_) {
+      sum[0] += l->force.x();
+      sum[1] += l->force.y();
+    }
+  }
+  MPI_Bcast(sum, 2, MPI_DOUBLE, root_, comm_.get());
+  fluid_load_[0] = sum[0];
+  fluid_load_[1] = sum[1];
 }
 
 void ContactCoupling::broadcast_surface() {
@@ -40,10 +107,21 @@ void ContactCoupling::broadcast_surface() {
     surface_ = ContactSystem::surface(*solver_);
     count = static_cast<int>(surface_.points.size());
     for (const auto& p : surface_.points) flat.insert(flat.end(), {p.x(), p.y()});
+    for (int node : surface_.nodes)
+      for (int c = 0; c < 2; ++c) flat.push_back(solver_->velocity()(2 * node + c));
+    for (int node : surface_.nodes)
+      for (int c = 0; c < 2; ++c) flat.push_back(solver_->acceleration()(2 * node + c));
   }
   MPI_Bcast(&count, 1, MPI_INT, root_, comm_.get());
-  flat.resize(2 * static_cast<std::size_t>(count));
-  MPI_Bcast(flat.data(), 2 * count, MPI_DOUBLE, root_, comm_.get());
+  flat.resize(6 * static_cast<std::size_t>(count));
+  MPI_Bcast(flat.data(), 6 * count, MPI_DOUBLE, root_, comm_.get());
+  surface_motion_.resize(4 * static_cast<std::size_t>(count));
+  for (int k = 0; k < count; ++k) {
+    surface_motion_[4 * k] = flat[2 * count + 2 * k];
+    surface_motion_[4 * k + 1] = flat[2 * count + 2 * k + 1];
+    surface_motion_[4 * k + 2] = flat[4 * count + 2 * k];
+    surface_motion_[4 * k + 3] = flat[4 * count + 2 * k + 1];
+  }
   if (rank_ != root_) {
     surface_.points.resize(count);
     surface_.nodes.assign(count, -1);  // node ids are the structure's business
@@ -216,7 +294,17 @@ const CouplingStepReport& ContactCoupling::step(double t, double dt, const Inter
     last_.force_x = summary[2];
     last_.force_y = summary[3];
     last_.max_force = summary[4];
+    const std::vector<Eigen::Vector2d> before = surface_.points;
     broadcast_surface();
+    // The surface's velocity for the water is its mean velocity over the step, (x_n+1 - x_n) / dt: the Newmark
+    // (trapezoidal) nodal velocity carries the plate's undamped high-frequency content, v_n+1 = 2 (u_n+1 - u_n) /
+    // dt - v_n, and fed back through the plate-wall ghosts it grew into a plate-water oscillation (docs/coupling.md).
+    static const bool newmark_velocity = std::getenv("HALFETI_NEWMARK_SURFACE_VELOCITY") != nullptr;
+    if (!newmark_velocity && before.size() == surface_.points.size())
+      for (std::size_t k = 0; k < before.size(); ++k) {
+        surface_motion_[4 * k] = (surface_.points[k].x() - before[k].x()) / dt;
+        surface_motion_[4 * k + 1] = (surface_.points[k].y() - before[k].y()) / dt;
+      }
   }
   return last_;
 }

@@ -73,6 +73,10 @@ void Fluid::set_barriers(const std::vector<Barrier>& extra) {
   search_.set_barriers(std::move(all));
 }
 
+void Fluid::set_plate_outline(const PlateOutline& outline) {
+  plate_wall_.set_outline(outline, dx_, kernel_.support());
+}
+
 bool Fluid::near_internal_wall(double px, double py) const {
   for (const auto& w : params_.internal_walls) {
     const double tx = w.xb - w.xa, ty = w.yb - w.ya, len2 = tx * tx + ty * ty;
@@ -216,6 +220,15 @@ void Fluid::compute_forces() {
     k.body_x = -ag;  // the tank frame: every mass feels -a_g(t)
     k.body_y = -params_.gravity;
     momentum_rates(pv, pairs_, wall_pairs_, walls_, ghost_pairs_, ghosts_, k, rates_);
+    if (!plate_wall_.empty()) {  // the plate's surface as a moving wall (plate_wall.hpp)
+      plate_wall_.find_pairs(x_.data(), y_.data(), n_owned_, kernel_);
+      const PlateWallConstants pk{dx_, kernel_.h, k.rho0, c0_, k.alpha, k.body_x, k.body_y, true};
+      plate_wall_.momentum(vx_.data(), vy_.data(), rho_.data(), p_.data(), mass_.data(), gid_.data(), pk,
+                           rates_.ax.data(), rates_.ay.data());
+      double a2 = rates_.max_accel * rates_.max_accel;
+      for (int i = 0; i < n_owned_; ++i) a2 = std::max(a2, rates_.ax[i] * rates_.ax[i] + rates_.ay[i] * rates_.ay[i]);
+      rates_.max_accel = std::sqrt(a2);
+    }
     // Time step: CFL on sound and viscous signal speed and the force limit (Monaghan 1989 style); max is exact.
     double m[2] = {rates_.max_mu, rates_.max_accel};
     MPI_Allreduce(MPI_IN_PLACE, m, 2, MPI_DOUBLE, MPI_MAX, comm_.get());
@@ -258,6 +271,7 @@ void Fluid::predict() {
     const ParticleView pv{x_.data(), y_.data(), vx_.data(), vy_.data(), rho_.data(), mass_.data(), p_.data(),
                           volume_.data(), n_owned_, n_local_};
     continuity_rates(pv, pairs_, ghost_pairs_, ghosts_, grad_rho_, constants_, rates_);
+    if (!plate_wall_.empty()) plate_wall_.continuity(vx_.data(), vy_.data(), rho_.data(), rates_.drho.data());
   }
   {
     // ... and drift r += dt (v + XSPH), rho += dt Drho.

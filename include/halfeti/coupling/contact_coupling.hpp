@@ -24,6 +24,8 @@
 #include "halfeti/coupling/interface_exchange.hpp"
 #include "halfeti/coupling/ssosd.hpp"
 #include "halfeti/sph/neighbour_list.hpp"
+#include "halfeti/sph/plate_wall.hpp"
+#include "halfeti/core/nodal_element.hpp"
 #include "halfeti/structure/plate_solver.hpp"
 
 namespace halfeti::coupling {
@@ -43,6 +45,9 @@ struct CouplingParameters {
   double mass_participation = 1.0;
   ContactSolver solver = ContactSolver::kCondensed;  // scene: coupling.solver: condensed | saddle_point
   bool unilateral = true;  // scene: coupling.unilateral: release invaders the solve would pull (C . n < 0)
+  // scene: coupling.plate_wall: the plate's faces act on the water in the SPH sums (wall ghosts, docs/coupling.md);
+  // false = the paper's form, the water feels the plate through the contact of eq. 21 only.
+  bool plate_wall = true;
   SsosdParameters ssosd;   // scene: coupling.ssosd.{enabled,layer_ratio,velocity_floor}
   double inside_tolerance = 1e-9;  // m, > 0: an invader ending deeper than this past the surface is an error
   std::string options_prefix = "structure_contact_";  // PETSc options prefix of the contact KSP
@@ -77,6 +82,13 @@ class ContactCoupling {
   // The plate's current outer surface as segments, on every rank (for Fluid::set_barriers: no SPH interaction
   // across the plate).
   std::vector<sph::Barrier> outline() const;
+  // The same surface with its points' velocities and accelerations (for Fluid::set_plate_outline).
+  sph::PlateOutline plate_outline() const;
+  // Collective. The fluid's plate-wall loads of this rank (Fluid::plate_wall_loads()), applied to the plate over
+  // the next step(): gathered to the root, summed per surface point in (gid, point) order (rank-independent).
+  void set_fluid_loads(const std::vector<sph::PlateWallLoad>& local);
+  double fluid_load_x() const { return fluid_load_[0]; }  // N/m, total on the plate, every rank
+  double fluid_load_y() const { return fluid_load_[1]; }
   const SurfacePolyline& surface() const { return surface_; }
 
   const CouplingStepReport& last_step() const { return last_; }
@@ -90,8 +102,22 @@ class ContactCoupling {
   std::vector<InvaderCorrection> solve_on_root(double t, double dt, double layer,
                                                const std::vector<Invader>& inv);
 
+  // A dead load on one surface node (the water's plate-wall force of the step), as a nodal element.
+  struct PointLoad : NodalElement {
+    int node = 0;
+    Eigen::Vector2d force = Eigen::Vector2d::Zero();
+    std::vector<int> nodes() const override { return {node}; }
+    void evaluate(const std::vector<Eigen::Vector2d>&, Eigen::VectorXd& f, Eigen::MatrixXd& k) override {
+      f = -force;  // external: enters the residual with the opposite sign of an internal force
+      k = Eigen::MatrixXd::Zero(2, 2);
+    }
+  };
+
   Communicator comm_;
   int rank_ = 0, root_ = 0;
+  std::vector<std::unique_ptr<PointLoad>> loads_;  // root: one per surface point (clamped ones ignored)
+  double fluid_load_[2] = {0.0, 0.0};
+  std::vector<double> surface_motion_;             // every rank: vx, vy, ax, ay per surface point
   double thickness_ = 0.0;  // m, the plate's: bounds how deep inside an invader can be found
   structure::PlateSolver* solver_;
   CouplingParameters params_;

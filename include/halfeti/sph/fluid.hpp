@@ -22,6 +22,7 @@
 #include "halfeti/sph/health.hpp"
 #include "halfeti/sph/neighbour_list.hpp"
 #include "halfeti/sph/params.hpp"
+#include "halfeti/sph/plate_wall.hpp"
 #include "halfeti/sph/walls.hpp"
 
 namespace halfeti::sph {
@@ -72,6 +73,10 @@ class Fluid {
   std::vector<double>& extra_acceleration_y() { return extra_ay_; }
   // Fluid pairs whose segment crosses one of these lines do not interact (added to the internal walls).
   void set_barriers(const std::vector<Barrier>& extra);
+  // The plate's surface as a moving wall in the SPH sums (plate_wall.hpp), from the next compute_forces() on;
+  // an empty outline turns it off. The loads of the last compute_forces() on the surface points, per particle.
+  void set_plate_outline(const PlateOutline& outline);
+  const std::vector<PlateWallLoad>& plate_wall_loads() const { return plate_wall_.loads(); }
 
   // Probes: collective, same value on every rank, bitwise independent of the rank count.
   // Kernel interpolation over fluid particles, first-order corrected (MLS; Shepard where the moments are singular).
@@ -124,6 +129,7 @@ class Fluid {
   Rates rates_;
   RateConstants constants_{};
   std::vector<double> extra_ax_, extra_ay_;
+  PlateWall plate_wall_;
 
   double time_ = 0.0, dt_ = 0.0;
   long step_ = 0;
