@@ -56,12 +56,15 @@ void momentum_rates(const ParticleView& pv, const PairList& pairs, const PairLis
     ay *= inv_rhoi;
     max_mu = std::max(max_mu, k.h * mu_i);
 
-    // Wall pressure: the eq. 4 pressure term over the ghost points behind the tank walls, their pressure continued
-    // hydrostatically from particle i (Adami et al. 2012); a wall pushes, it never pulls (sum clamped at 0).
+    // Wall pressure: the eq. 4 pressure term over the ghost points behind the walls, their pressure continued
+    // from particle i by the body force (Adami et al. 2012), p_g = p_i + rho_i b.(r_g - r_i). Not clamped: a
+    // particle in tension (p_i < 0) next to a wall must see its tension continued behind the wall, or the
+    // truncated fluid sum -(1/rho_i) sum (p_i + p_j) V_j grad W pushes it off the wall by about 2 |p_i| / (rho h),
+    // it expands (continuity over the mirrored ghosts) and its pressure falls further (docs/sph.md, "Walls").
     if (k.wall_pressure)
       for_each_neighbour(ghost_pairs, i, [&](int g, int q) {
         const double p_ghost = pi + rhoi * (k.body_x * ghost_pairs.ex[q] + k.body_y * ghost_pairs.ey[q]);
-        double s = -std::max(pi + p_ghost, 0.0) * ghosts.volume[g] / rhoi * -ghost_pairs.f[q];
+        double s = -(pi + p_ghost) * ghosts.volume[g] / rhoi * -ghost_pairs.f[q];
         // eq. 8 with the ghost's velocity: mirrored (free slip, u_g - u_i = -2 (u_i.n) n, only the wall-normal
         // motion is damped) or reversed (no slip, u_g - u_i = -2 u_i)
         const double ex = ghost_pairs.ex[q], ey = ghost_pairs.ey[q], r2 = ex * ex + ey * ey;
