@@ -40,7 +40,6 @@ int execute(const std::vector<std::string>& args, MPI_Comm comm) {
       scene::Scene s = scene::load_scene(cmd.scene, cmd.overrides, *scene_schema(), comm);
       Parts parts;
       build_parameters(s, parts);
-      make_probes(s.root(), parts);
       if (rank == 0) std::cout << "# " << cmd.scene << ": ok\n" << s.resolved_text();
       return 0;
     }

@@ -63,7 +63,24 @@ void on_structure_rank(MPI_Comm comm, bool structure_rank, Work&& work) {
 
 }  // namespace
 
-void build_parameters(const scene::Scene& scene, Parts& parts) {
+namespace {
+void read_parameters(const scene::Scene& scene, Parts& parts);
+}  // namespace
+
+std::vector<ProbeColumn> build_parameters(const scene::Scene& scene, Parts& parts) {
+  // Checks across keys name the key path; the scene file is added here.
+  try {
+    read_parameters(scene, parts);
+    return make_probes(scene.root(), parts);
+  } catch (const UserError& e) {
+    const std::string what = e.what();
+    if (what.rfind(scene.file, 0) == 0) throw;
+    throw UserError(scene.file + ": " + what);
+  }
+}
+
+namespace {
+void read_parameters(const scene::Scene& scene, Parts& parts) {
   const scene::Node root = scene.root();
   parts.scene_dir = directory_of(scene.file);
   parts.gravity = root.real("gravity");
@@ -87,6 +104,7 @@ void build_parameters(const scene::Scene& scene, Parts& parts) {
                                               g.base_centre.y() + g.height + half});
   }
 }
+}  // namespace
 
 namespace {
 
@@ -144,8 +162,7 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
   MPI_Bcast(&ok, 1, MPI_INT, 0, comm_);
   if (!ok) throw UserError(rank_ == 0 ? why : "cannot create the output folder '" + out_dir_ + "'");
 
-  build_parameters(scene_, parts_);
-  probes_ = make_probes(root, parts_);
+  probes_ = build_parameters(scene_, parts_);
   if (parts_.fluid_params) {
     ScopedTimer timer(timers_, "setup");
     parts_.fluid = std::make_unique<sph::Fluid>(comm_, *parts_.fluid_params, parts_.motion.get());
@@ -254,6 +271,12 @@ double Simulation::advance_coupled() {
     const auto& r = parts_.coupling->last_step();
     int rank = 0;
     MPI_Comm_rank(comm_, &rank);
+    double best = 0, bx = 0, by = 0;
+    for (std::size_t i = 0; i < f.owned_count(); ++i) {
+      const double u = std::hypot(f.vx()[i], f.vy()[i]);
+      if (u > best) { best = u; bx = f.x()[i]; by = f.y()[i]; }
+    }
+    std::fprintf(stderr, "DBGU rank %d umax %.3g at (%.5f, %.5f)\n", rank, best, bx, by);
     if (rank == 0)
       std::fprintf(stderr, "DBGC t=%.5f inv=%d rel=%d L=%.3g umax=%.3g Fc=(%.4g,%.4g) maxF=%.3g Fw=(%.4g,%.4g)\n", f.time(),
                    r.invaders, r.released, r.layer, r.u_max, r.force_x, r.force_y, r.max_force,

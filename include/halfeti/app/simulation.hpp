@@ -26,8 +26,9 @@ struct RunOptions {
 };
 
 // Reads what a resolved scene names without building the heavy parts (what `halfeti check` does beyond the
-// schema): ground motion (its record file), part parameters with their cross-checks, probes.
-void build_parameters(const scene::Scene& scene, Parts& parts);
+// schema): ground motion (its record file), part parameters with their cross-checks, and the probes, bound to
+// `parts` (which must outlive them). Errors name the scene file and the key.
+std::vector<ProbeColumn> build_parameters(const scene::Scene& scene, Parts& parts);
 
 class Simulation {
  public:

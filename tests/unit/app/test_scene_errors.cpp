@@ -94,3 +94,36 @@ TEST(SceneErrors, CheckCommandAnswersOneLineAndExitsTwo) {
     EXPECT_EQ(err, "halfeti: error: " + expected + "\n") << c.what;
   }
 }
+
+TEST(SceneErrors, ChecksAcrossKeysNameTheFileAndKey) {
+  // Errors found after the schema (a key that depends on another) still name the scene file and the key path.
+  const std::string dir = std::string(HALFETI_BINARY_DIR) + "/scene_cross_cases";
+  io::make_directories(dir);
+  const struct {
+    const char* text;
+    const char* message;
+  } cases[] = {
+      {"scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0], time_step: 0.001}\n"
+       "cables: [{name: a, anchor: [0, 0.01], node: nowhere, area: 1e-6, modulus: 1e6, density: 1000, "
+       "initial_stress: 1e3}]\n",
+       "cables[0].node: no plate node named 'nowhere'"},
+      {"scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
+       "fluid: {spacing: 0.01, water: [{from: [0, 0], to: [0.5, 0.1]}]}\n",
+       "fluid.water[0]: water from [0, 0] to [0.5, 0.1] does not fit in the tank"},
+      {"scene: {name: s, end_time: 1}\nprobes: [{name: p, kind: displacement, node: top_left, component: x}]\n",
+       "probes[0]: this probe reads the plate, but the scene has no `structure:` section"},
+      {"scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0]}\n",
+       "structure.time_step: required when the scene has no `fluid:`"},
+      {"scene: {name: s, end_time: 1}\nexcitation: {kind: record, file: missing.csv}\n",
+       "cannot open accelerogram"},
+  };
+  for (const auto& c : cases) {
+    const std::string path = dir + "/cross.yaml";
+    std::ofstream(path) << c.text;
+    std::string err;
+    EXPECT_EQ(run_and_capture("check " + path, err), 2) << c.message;
+    EXPECT_EQ(err.rfind("halfeti: error: " + path + ": ", 0), 0u) << err;
+    EXPECT_NE(err.find(c.message), std::string::npos) << err;
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  }
+}
