@@ -43,6 +43,10 @@ TEST(DamBreak, SurgeFrontFollowsMartinMoyce) {
   p.tank_height = 3.0 * a;
   p.spacing = a / 25.0;
   p.water = {{0.0, 0.0, a, 2.0 * a, 0.0}};
+  // eq. 10 with the flow's own velocity scale: the surge runs at up to Ritter's 2 sqrt(g d), d = 2a (2.1 m/s),
+  // twice the long-wave speed sqrt(g d) the automatic c0 assumes; c0 = u_b / sqrt(drho/rho0) = 30 m/s for
+  // drho/rho0 = 0.5%. (The automatic 15 m/s lets the front run 1.2% further: docs/sph.md.)
+  p.sound_speed = 2.0 * std::sqrt(p.gravity * 2.0 * a) / std::sqrt(0.5 * p.max_density_variation);
   Fluid fluid(MPI_COMM_WORLD, p, nullptr);
   const double tscale = std::sqrt(2.0 * p.gravity / a);  // T* = t sqrt(2 g / a)
   double sum2 = 0.0;
@@ -56,11 +60,13 @@ TEST(DamBreak, SurgeFrontFollowsMartinMoyce) {
     if (rank == 0) std::printf("T* = %.3f: Z/a = %.3f (data %.3f), error %+.2f%%\n", tstar, z, z_data, 100 * err);
   }
   const double rms = std::sqrt(sum2 / data.size());
-  // The brief's target is 5%. The front leads the data early on (T* < 2: +10 to +13%), as in most free-slip SPH
-  // runs: the experiment's gate and bottom friction delay the toe. This guards against regressions at the
-  // measured level (docs/sph.md has the table); tighten it when the early phase is understood.
+  // The target is 5%; not met (docs/sph.md has the table): the free-slip front leads the data at every point, by
+  // +11 to +16% before T* = 4 and +6 to +7% after, and runs at 1.80 a sqrt(2g/a) late against the data's 1.69
+  // (Ritter's ideal-fluid value is 2). The former 7.7% came from the wall-pressure defect: the clamped wall ghosts
+  // tore particles in tension off the floor (-12.5 kPa at t = 10 ms), which slowed the surge. This guards the
+  // measured 9.4% against regressions.
   if (rank == 0)
     std::printf("RMS relative error %.2f%% over %zu points; %ld particles, %ld steps, wall %.1f s in forces\n",
                 100 * rms, data.size(), fluid.global_count(), fluid.step_count(), fluid.timers().seconds("forces"));
-  EXPECT_LE(rms, 0.09);
+  EXPECT_LE(rms, 0.10);
 }
