@@ -69,6 +69,10 @@ std::shared_ptr<const Schema> coupling_schema() {
                         "the plate's faces enter the SPH sums as a moving wall (pressure ghosts, their force on the "
                         "plate); false: the paper's form, contact only")
                .def(true));
+    s->add(Key::boolean("plate_wall_velocity",
+                        "the plate-wall ghosts move with the plate's faces in the continuity and viscous terms "
+                        "(false: at rest; the feedback was unstable)")
+               .def(false));
     s->add(Key::section("ssosd", "the intermediate layer", ssosd_schema()).always());
     s->add(Key::real("inside_tolerance", "depth past the surface at which a particle left inside stops the run",
                      "m")
@@ -87,6 +91,7 @@ coupling::CouplingParameters coupling_params(const scene::Node& root) {
   p.velocity_update = velocity_registry().get(c.string("velocity_update")).make;
   p.unilateral = c.boolean("unilateral");
   p.plate_wall = c.boolean("plate_wall");
+  p.plate_wall_velocity = c.boolean("plate_wall_velocity");
   p.mass_participation = c.string("mass_participation") == "kick_drift" ? 1.0 : 2.0;
   const scene::Node s = c.section("ssosd");
   p.ssosd.enabled = s.boolean("enabled");

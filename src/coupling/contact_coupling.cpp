@@ -48,8 +48,8 @@ sph::PlateOutline ContactCoupling::plate_outline() const {
   for (std::size_t k = 0; k < surface_.points.size(); ++k) {
     o.x.push_back(surface_.points[k].x());
     o.y.push_back(surface_.points[k].y());
-    o.vx.push_back(surface_motion_[4 * k]);
-    o.vy.push_back(surface_motion_[4 * k + 1]);
+    o.vx.push_back(params_.plate_wall_velocity ? surface_motion_[4 * k] : 0.0);
+    o.vy.push_back(params_.plate_wall_velocity ? surface_motion_[4 * k + 1] : 0.0);
     o.ax.push_back(surface_motion_[4 * k + 2]);
     o.ay.push_back(surface_motion_[4 * k + 3]);
   }

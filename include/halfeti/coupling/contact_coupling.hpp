@@ -48,6 +48,10 @@ struct CouplingParameters {
   // scene: coupling.plate_wall: the plate's faces act on the water in the SPH sums (wall ghosts, docs/coupling.md);
   // false = the paper's form, the water feels the plate through the contact of eq. 21 only.
   bool plate_wall = true;
+  // scene: coupling.plate_wall_velocity: the ghosts move with the face (its mean velocity over the last step) in
+  // eqs. 3 and 8; false (default): the faces' ghosts are at rest, the plate pushes the water by their positions and
+  // the contact (the moving-face feedback grew into a plate-water oscillation, docs/coupling.md).
+  bool plate_wall_velocity = false;
   SsosdParameters ssosd;   // scene: coupling.ssosd.{enabled,layer_ratio,velocity_floor}
   double inside_tolerance = 1e-9;  // m, > 0: an invader ending deeper than this past the surface is an error
   std::string options_prefix = "structure_contact_";  // PETSc options prefix of the contact KSP
