@@ -33,6 +33,8 @@ const Registry<coupling::VelocityUpdate>& velocity_registry() {
       {"acceleration", "dv = C dt / m: the contact acceleration of eq. 4 held over the step",
        coupling::VelocityUpdate::kAcceleration},
       {"displacement", "dv = dx / dt: the velocity of the relocation itself", coupling::VelocityUpdate::kDisplacement},
+      {"normal_stop", "dv = -min(0, (v - v_surface).n) n: the approach is stopped, the relocation adds no velocity",
+       coupling::VelocityUpdate::kNormalStop},
   });
   return r;
 }

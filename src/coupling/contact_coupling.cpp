@@ -221,9 +221,21 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
       // Delta C = C / m held over the step (eq. 4): the velocity changes by C dt / m.
       out.dvx = f.x() * dt / gathered[k].mass;
       out.dvy = f.y() * dt / gathered[k].mass;
-    } else {
+    } else if (params_.velocity_update == VelocityUpdate::kDisplacement) {
       out.dvx = out.dx / dt;
       out.dvy = out.dy / dt;
+    } else {
+      // Inelastic contact without the relocation's velocity: remove the normal approach relative to the surface.
+      const auto& seg = segments[static_cast<std::size_t>(invaders[k].segment)];
+      const Eigen::Vector2d xf = solver_->position(seg.first), xs = solver_->position(seg.second);
+      const Eigen::Vector2d d = xs - xf;
+      const Eigen::Vector2d n = Eigen::Vector2d(d.y(), -d.x()).normalized();
+      const double eta = std::clamp(d.dot(y - xf) / d.squaredNorm(), 0.0, 1.0);  // eq. 20 at the final surface
+      const Eigen::Vector2d vs = (1.0 - eta) * solver_->velocity().segment<2>(2 * seg.first) +
+                                 eta * solver_->velocity().segment<2>(2 * seg.second);
+      const double vn = (Eigen::Vector2d(gathered[k].vx, gathered[k].vy) - vs).dot(n);
+      out.dvx = vn < 0.0 ? -vn * n.x() : 0.0;
+      out.dvy = vn < 0.0 ? -vn * n.y() : 0.0;
     }
     out.fx = f.x();
     out.fy = f.y();

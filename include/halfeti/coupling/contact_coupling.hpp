@@ -34,7 +34,10 @@ namespace halfeti::coupling {
 //   kAcceleration: dv = C dt / m, the constant acceleration Delta C = C / m of eq. 4 held over the step, the
 //                  Newmark (beta 1/2, gamma 1) partner of the 2 / dt^2 mass participation: dv = 2 dx / dt;
 //   kDisplacement: dv = dx / dt, the velocity the fluid's own drift x += dt v would need for the same dx.
-enum class VelocityUpdate { kAcceleration, kDisplacement };
+//   kNormalStop:   dv = -min(0, (v - v_s) . n) n: the particle's approach to the surface (velocity v_s of its contact
+//                  point) is stopped and nothing more; the relocation (contact + SSOSD, eqs. 21-22) moves it
+//                  without turning into velocity (docs/coupling.md: dx / dt of an SSOSD shift reached 3 m/s).
+enum class VelocityUpdate { kAcceleration, kDisplacement, kNormalStop };
 
 struct CouplingParameters {
   ContactConstraint constraint = ContactConstraint::kTied;  // scene: coupling.constraint: tied | normal
