@@ -177,8 +177,12 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
   }
   if (parts_.coupling_params) {
     parts_.coupling = std::make_unique<coupling::ContactCoupling>(comm_, parts_.plate.get(), *parts_.coupling_params);
-    parts_.fluid->set_barriers(parts_.coupling->outline());
-    if (parts_.coupling_params->plate_wall) parts_.fluid->set_plate_outline(parts_.coupling->plate_outline());
+    if (parts_.coupling_params->plate_wall) {
+      parts_.fluid->set_barriers(parts_.coupling->midline());
+      parts_.fluid->set_plate_outline(parts_.coupling->plate_outline());
+    } else {
+      parts_.fluid->set_barriers(parts_.coupling->outline());
+    }
   }
   std::vector<std::string> names;
   for (const auto& p : probes_) names.push_back(p.name);
@@ -265,13 +269,21 @@ double Simulation::advance_coupled() {
   const auto& c = parts_.corrections;
   f.apply_corrections(c.touched, c.dx.data(), c.dy.data(), c.dvx.data(), c.dvy.data(), c.drho.data());
   f.finish();
-  f.set_barriers(parts_.coupling->outline());
+  // The barrier: the plate's mid-line with the plate-wall ghosts (they stand for what the plate hides), its
+  // outline in the paper's contact-only form.
+  f.set_barriers(plate_wall ? parts_.coupling->midline() : parts_.coupling->outline());
   if (plate_wall) f.set_plate_outline(parts_.coupling->plate_outline());
   // Diagnostic: one line per step on stderr (contact and plate-wall forces on the plate's side), for the noise
   // figures of docs/coupling.md.
   static const bool trace = std::getenv("HALFETI_TRACE_COUPLING") != nullptr;
   if (trace) {
     const auto& r = parts_.coupling->last_step();
+    double best = 0, bx = 0, by = 0;  // this rank's fastest particle
+    for (std::size_t i = 0; i < f.owned_count(); ++i) {
+      const double u = std::hypot(f.vx()[i], f.vy()[i]);
+      if (u > best) { best = u; bx = f.x()[i]; by = f.y()[i]; }
+    }
+    std::fprintf(stderr, "coupling_trace_fastest t=%.6f u=%.3g at (%.5f, %.5f)\n", f.time(), best, bx, by);
     int rank = 0;
     MPI_Comm_rank(comm_, &rank);
     if (rank == 0)

@@ -29,8 +29,10 @@ TEST(StillPlate, WaterAndPlateStayStill) {
   const double pressure_tolerance = 0.02;
 #else
   const std::string out = test::binary_path("validation_still_plate");
-  const std::string args = "--set fluid.spacing=0.003 --set scene.end_time=0.06 --set output.field_interval=0";
-  const double pressure_tolerance = 0.05;  // three particles across the probe's kernel at dx 3 mm
+  // The paper's dx (the water lattice then starts half a spacing from both faces, as the wall ghosts assume; at dx
+  // 2 or 3 mm it starts 0.75 or 1 spacing away and the first row's pressure is 20-100 % off), 30 ms.
+  const std::string args = "--set scene.end_time=0.03 --set output.field_interval=0";
+  const double pressure_tolerance = 0.04;  // the start's acoustic ringing is not yet damped
 #endif
   ASSERT_EQ(test::run_scene(test::source_path("inputs/validation/still_plate.yaml"), out, args, 2), 0)
       << test::read_text(out + ".stderr");
