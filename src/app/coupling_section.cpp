@@ -60,7 +60,7 @@ std::shared_ptr<const Schema> coupling_schema() {
     s->add(Key::choice("solver", "how eq. 21 is solved", solver_registry().names()).def("condensed"));
     s->add(Key::choice("velocity_update", "how the contact changes an invader's velocity",
                        velocity_registry().names())
-               .def("acceleration"));
+               .def("normal_stop"));
     s->add(Key::choice("mass_participation",
                        "invader mass participation in eq. 21: kick_drift (m/dt^2, consistent with the fluid's step, "
                        "inelastic) or constant_acceleration (the paper's 2m/dt^2)",

@@ -41,7 +41,7 @@ enum class VelocityUpdate { kAcceleration, kDisplacement, kNormalStop };
 
 struct CouplingParameters {
   ContactConstraint constraint = ContactConstraint::kTied;  // scene: coupling.constraint: tied | normal
-  VelocityUpdate velocity_update = VelocityUpdate::kAcceleration;  // scene: coupling.velocity_update
+  VelocityUpdate velocity_update = VelocityUpdate::kNormalStop;  // scene: coupling.velocity_update
   // Mass participation factor p in p m / dt^2 (scene: coupling.mass_participation): 1 = kick_drift (the fluid's
   // symplectic-Euler step: an impulse J moves a particle by dt J / m, so dv = C dt / m = dx / dt and the contact
   // is inelastic), 2 = constant_acceleration (the paper's 2/dt^2: dv = 2 dx / dt, an elastic bounce).
