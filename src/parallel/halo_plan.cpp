@@ -1,5 +1,7 @@
 #include "halfeti/parallel/halo_plan.hpp"
 
+#include "halfeti/parallel/exchange.hpp"
+
 #include <algorithm>
 
 namespace halfeti::parallel {
@@ -52,15 +54,7 @@ HaloPlan::HaloPlan(MPI_Comm comm, const CellGrid& grid, const std::vector<int>& 
 }
 
 void HaloPlan::exchange(const void* send, void* recv, int ncomp, MPI_Datatype type) const {
-  const int size = static_cast<int>(send_counts_.size());
-  std::vector<int> sc(size), sd(size), rc(size), rd(size);
-  for (int r = 0; r < size; ++r) {
-    sc[r] = send_counts_[r] * ncomp;
-    sd[r] = send_displs_[r] * ncomp;
-    rc[r] = recv_counts_[r] * ncomp;
-    rd[r] = recv_displs_[r] * ncomp;
-  }
-  MPI_Alltoallv(send, sc.data(), sd.data(), type, recv, rc.data(), rd.data(), type, comm_);
+  exchange_items(comm_, send_counts_, send_displs_, recv_counts_, recv_displs_, ncomp, send, recv, type);
 }
 
 void HaloPlan::update(std::vector<double>& field, std::size_t owned, int ncomp) const {

@@ -1,5 +1,7 @@
 #include "halfeti/parallel/migration.hpp"
 
+#include "halfeti/parallel/exchange.hpp"
+
 namespace halfeti::parallel {
 
 std::vector<int> destinations(const std::vector<int>& cells, const std::vector<int>& owner) {
@@ -36,15 +38,7 @@ ParticleMigration::ParticleMigration(MPI_Comm comm, const std::vector<int>& dest
 }
 
 void ParticleMigration::move(const void* send, void* recv, int ncomp, MPI_Datatype type, std::size_t) const {
-  const int size = static_cast<int>(send_counts_.size());
-  std::vector<int> sc(size), sd(size), rc(size), rd(size);
-  for (int r = 0; r < size; ++r) {
-    sc[r] = send_counts_[r] * ncomp;
-    sd[r] = send_displs_[r] * ncomp;
-    rc[r] = recv_counts_[r] * ncomp;
-    rd[r] = recv_displs_[r] * ncomp;
-  }
-  MPI_Alltoallv(send, sc.data(), sd.data(), type, recv, rc.data(), rd.data(), type, comm_);
+  exchange_items(comm_, send_counts_, send_displs_, recv_counts_, recv_displs_, ncomp, send, recv, type);
 }
 
 void ParticleMigration::apply(std::vector<double>& field, int ncomp) const {
