@@ -135,6 +135,11 @@ void build_structure(Parts& parts, MPI_Comm comm) {
   }
 }
 
+// The owned particles' global ids as doubles, for the field and checkpoint files.
+std::vector<double> owned_gids(const sph::Fluid& f) {
+  return std::vector<double>(f.gid().begin(), f.gid().begin() + static_cast<long>(f.owned_count()));
+}
+
 // Mass per unit length of a cable set per unit depth that feels the tank's inertial load (as its weight does).
 double cable_line_mass(const CableSetup& c) {
   return c.set.count * (c.set.density - c.set.fluid_density) * c.set.area / c.set.depth;
@@ -232,13 +237,18 @@ void Simulation::prepare_structure() {
   });
 }
 
+void Simulation::load_cables(double t) {
+  // The tank frame's inertial load on the cables (their weight stays in the element), at the end of the step.
+  const double ag = parts_.motion->acceleration(t);
+  for (size_t i = 0; i < parts_.cables.size(); ++i)
+    parts_.cables[i]->set_horizontal_load(-cable_line_mass(parts_.cable_setups[i]) * ag);
+}
+
 void Simulation::step_structure(double t, double dt) {
   if (!parts_.structure_setup) return;
   ScopedTimer timer(timers_, "structure");
   on_structure_rank(comm_, parts_.structure_rank, [&] {
-    const double ag = parts_.motion->acceleration(t + dt);
-    for (size_t i = 0; i < parts_.cables.size(); ++i)
-      parts_.cables[i]->set_horizontal_load(-cable_line_mass(parts_.cable_setups[i]) * ag);
+    load_cables(t + dt);
     parts_.plate->step(t, dt);
   });
 }
@@ -253,11 +263,7 @@ double Simulation::advance_coupled() {
   const bool plate_wall = parts_.coupling->parameters().plate_wall;
   if (plate_wall) parts_.coupling->set_fluid_loads(f.plate_wall_loads());  // the water's wall force on the plate
   f.predict();
-  if (parts_.plate) {
-    const double ag = parts_.motion->acceleration(t + dt);
-    for (size_t i = 0; i < parts_.cables.size(); ++i)
-      parts_.cables[i]->set_horizontal_load(-cable_line_mass(parts_.cable_setups[i]) * ag);
-  }
+  if (parts_.plate) load_cables(t + dt);
   const coupling::InterfaceParticles view{f.owned_count(), f.gid().data(),  f.x().data(),
                                           f.y().data(),    f.vx().data(),   f.vy().data(),
                                           f.mass().data(),
@@ -284,9 +290,7 @@ double Simulation::advance_coupled() {
       if (u > best) { best = u; bx = f.x()[i]; by = f.y()[i]; }
     }
     std::fprintf(stderr, "coupling_trace_fastest t=%.6f u=%.3g at (%.5f, %.5f)\n", f.time(), best, bx, by);
-    int rank = 0;
-    MPI_Comm_rank(comm_, &rank);
-    if (rank == 0)
+    if (rank_ == 0)
       std::fprintf(stderr, "coupling_trace t=%.6f inv=%d rel=%d L=%.3g umax=%.3g Fc=(%.4g,%.4g) maxF=%.3g Fw=(%.4g,%.4g)\n", f.time(),
                    r.invaders, r.released, r.layer, r.u_max, r.force_x, r.force_y, r.max_force,
                    parts_.coupling->fluid_load_x(), parts_.coupling->fluid_load_y());
@@ -348,7 +352,7 @@ void Simulation::write_fields(double t) {
   const sph::Fluid& f = *parts_.fluid;
   const std::size_t n = f.owned_count();
   const std::vector<double> p = f.pressure();
-  std::vector<double> gid(f.gid().begin(), f.gid().begin() + static_cast<long>(n));
+  const std::vector<double> gid = owned_gids(f);
   fluid_fields_->write(t, n, f.x().data(), f.y().data(),
                        {{"vx", f.vx().data()}, {"vy", f.vy().data()}, {"rho", f.rho().data()},
                         {"p", p.data()}, {"gid", gid.data()}});
@@ -359,7 +363,7 @@ void Simulation::write_checkpoint(const std::string& label) {
   if (parts_.fluid) {
     const sph::Fluid& f = *parts_.fluid;
     const std::size_t n = f.owned_count();
-    std::vector<double> gid(f.gid().begin(), f.gid().begin() + static_cast<long>(n));
+    const std::vector<double> gid = owned_gids(f);
     const std::string path = checkpoints_->write(t_, n, f.x().data(), f.y().data(),
                                                  {{"vx", f.vx().data()}, {"vy", f.vy().data()},
                                                   {"rho", f.rho().data()}, {"gid", gid.data()}});

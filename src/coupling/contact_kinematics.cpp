@@ -26,17 +26,24 @@ SegmentProjection project_on_segment(const Eigen::Vector2d& x, const Eigen::Vect
   return p;
 }
 
+namespace {
+// The scan's rule, shared by both searches: the nearer segment wins; at equal distance the one the point stands
+// further in front of (the larger gap).
+void keep_closer(ContactPoint& best, int k, const SegmentProjection& p) {
+  const bool closer = best.segment < 0 || p.distance < best.projection.distance;
+  const bool tie_in_front =
+      best.segment >= 0 && p.distance == best.projection.distance && p.gap > best.projection.gap;
+  if (closer || tie_in_front) {
+    best.segment = k;
+    best.projection = p;
+  }
+}
+}  // namespace
+
 ContactPoint closest_segment(const SurfacePolyline& surface, const Eigen::Vector2d& x) {
   ContactPoint best;
   for (int k = 0; k < surface.segment_count(); ++k) {
-    const SegmentProjection p = project_on_segment(x, surface.points[k], surface.points[k + 1]);
-    const bool closer = best.segment < 0 || p.distance < best.projection.distance;
-    const bool tie_in_front =
-        best.segment >= 0 && p.distance == best.projection.distance && p.gap > best.projection.gap;
-    if (closer || tie_in_front) {
-      best.segment = k;
-      best.projection = p;
-    }
+    keep_closer(best, k, project_on_segment(x, surface.points[k], surface.points[k + 1]));
   }
   return best;
 }
@@ -75,14 +82,7 @@ ContactPoint SurfaceSearch::closest_within_reach(const Eigen::Vector2d& x) const
     const int first = static_cast<int>(r) * kRun;
     const int last = std::min(first + kRun, surface_.segment_count());
     for (int k = first; k < last; ++k) {
-      const SegmentProjection p = project_on_segment(x, surface_.points[k], surface_.points[k + 1]);
-      const bool closer = best.segment < 0 || p.distance < best.projection.distance;
-      const bool tie_in_front =
-          best.segment >= 0 && p.distance == best.projection.distance && p.gap > best.projection.gap;
-      if (closer || tie_in_front) {
-        best.segment = k;
-        best.projection = p;
-      }
+      keep_closer(best, k, project_on_segment(x, surface_.points[k], surface_.points[k + 1]));
     }
   }
   if (best.segment >= 0 && best.projection.distance > reach_) best = ContactPoint{};

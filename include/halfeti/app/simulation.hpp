@@ -48,6 +48,7 @@ class Simulation {
   void sample(double t);
   void prepare_structure();
   void step_structure(double t, double dt);
+  void load_cables(double t);
   void write_fields(double t);
   void write_plate_fields(double t);
   void write_checkpoint(const std::string& label);
