@@ -49,6 +49,18 @@ const Case kCases[] = {
      "bad.yaml:2:9: probes: expected a list of sections, found a section"},
     {"tank too small", "scene: {name: s, end_time: 1}\ntank: {length: 0, height: 1}\n",
      "bad.yaml:2:16: tank.length: expected a number > 0 and <= 100 (m), found '0'"},
+    {"unknown kernel",
+     "scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
+     "fluid: {spacing: 0.01, kernel: gaussian, water: [{from: [0, 0], to: [0.3, 0.1]}]}\n",
+     "bad.yaml:3:32: fluid.kernel: expected one of cubic_spline, wendland_c2, found 'gaussian'"},
+    {"incompressible rubber", "scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0], poisson_ratio: 0.5}\n",
+     "bad.yaml:2:45: structure.poisson_ratio: expected a number > -1 and < 0.5, found '0.5'"},
+    {"cable without area",
+     "scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0]}\n"
+     "cables: [{name: a, anchor: [0, 0.01], node: top_left, area: 0, modulus: 1e6, density: 1000}]\n",
+     "bad.yaml:3:61: cables[0].area: expected a number > 0 (m^2), found '0'"},
+    {"layer outside eq. 23's range", "scene: {name: s, end_time: 1}\ncoupling: {ssosd: {layer_ratio: 60}}\n",
+     "bad.yaml:2:33: coupling.ssosd.layer_ratio: expected a number in [5, 50], found '60'"},
     {"broken YAML", "scene: {name: s, end_time: 1\n", "bad.yaml:2:1: not valid YAML: end of map flow not found"},
     {"not a mapping", "- a\n- b\n",
      "bad.yaml: a scene is a YAML mapping of sections (scene:, fluid:, ...), found something else"},
