@@ -189,14 +189,14 @@ void Fluid::compute_forces() {
   const ParticleView pv{x_.data(), y_.data(), vx_.data(), vy_.data(), rho_.data(), mass_.data(), p_.data(),
                         volume_.data(), n_owned_, n_local_};
   const bool use_delta = params_.scheme == Scheme::kDeltaSph && params_.delta > 0.0;
+  // The wall ghosts' pressure is continued along the walls with the owned particles' gradient (eqs. 6, 9), so
+  // the standard scheme needs the gradient pass too (without its halo update: only owned particles read it).
+  const bool wall_taylor = params_.wall_pressure && params_.wall_ghost_pressure == WallGhostPressure::kTaylor;
   {
     ScopedTimer t(timers_, "density_gradient");
-    if (use_delta) {
-      density_gradient(pv, pairs_, grad_rho_);
-      halo_plan_.update(grad_rho_, n_owned_, 2);
-    } else {
-      grad_rho_.clear();
-    }
+    if (use_delta || wall_taylor) density_gradient(pv, pairs_, grad_rho_);
+    else grad_rho_.clear();
+    if (use_delta) halo_plan_.update(grad_rho_, n_owned_, 2);
   }
   {
     ScopedTimer t(timers_, "forces");
@@ -219,7 +219,9 @@ void Fluid::compute_forces() {
     k.wall_no_slip = params_.wall_no_slip;
     k.body_x = -ag;  // the tank frame: every mass feels -a_g(t)
     k.body_y = -params_.gravity;
-    momentum_rates(pv, pairs_, wall_pairs_, walls_, ghost_pairs_, ghosts_, k, rates_);
+    static const std::vector<double> kNoGradient;
+    momentum_rates(pv, pairs_, wall_pairs_, walls_, ghost_pairs_, ghosts_, wall_taylor ? grad_rho_ : kNoGradient, k,
+                   rates_);
     if (!plate_wall_.empty()) {  // the plate's surface as a moving wall (plate_wall.hpp)
       plate_wall_.find_pairs(x_.data(), y_.data(), n_owned_, kernel_);
       const PlateWallConstants pk{dx_, kernel_.h, k.rho0, c0_, k.alpha, k.body_x, k.body_y, true};

@@ -15,7 +15,7 @@ inline double tensile_coefficient(double p, double rho, double eps_neg, double e
 
 void momentum_rates(const ParticleView& pv, const PairList& pairs, const PairList& wall_pairs,
                     const WallParticles& walls, const PairList& ghost_pairs, const WallGhosts& ghosts,
-                    const RateConstants& k, Rates& out) {
+                    const std::vector<double>& grad_rho, const RateConstants& k, Rates& out) {
   const int n = pv.n_owned;
   out.ax.assign(n, 0.0);
   out.ay.assign(n, 0.0);
@@ -57,13 +57,26 @@ void momentum_rates(const ParticleView& pv, const PairList& pairs, const PairLis
     max_mu = std::max(max_mu, k.h * mu_i);
 
     // Wall pressure: the eq. 4 pressure term over the ghost points behind the walls, their pressure continued
-    // from particle i by the body force (Adami et al. 2012), p_g = p_i + rho_i b.(r_g - r_i). Not clamped: a
-    // particle in tension (p_i < 0) next to a wall must see its tension continued behind the wall, or the
-    // truncated fluid sum -(1/rho_i) sum (p_i + p_j) V_j grad W pushes it off the wall by about 2 |p_i| / (rho h),
-    // it expands (continuity over the mirrored ghosts) and its pressure falls further (docs/sph.md, "Walls").
+    // from particle i as a first-order Taylor expansion, p_g = p_i + grad p . (r_g - r_i). Across the wall the
+    // wall condition gives dp/dn = rho_i b.n (the wall is at rest in the tank frame); along it the particle's own
+    // gradient c0^2 <grad rho>^L_i (eqs. 6, 9), so that a film with no pressure gradient of its own gets no
+    // support from the ghosts (with b along the wall too, Adami et al. 2012, they held up a fifth of its weight).
+    // Corner quadrants lie behind two walls: the wall condition in both directions, p_g = p_i + rho_i b.r_gi.
+    // Not clamped: a particle in tension (p_i < 0) next to a wall must see its tension continued behind the wall,
+    // or the truncated fluid sum -(1/rho_i) sum (p_i + p_j) V_j grad W pushes it off the wall by about
+    // 2 |p_i| / (rho h), it expands and its pressure falls further (docs/sph.md, "Walls").
+    const bool taylor = !grad_rho.empty();
+    const double gpx = taylor ? k.c0 * k.c0 * grad_rho[2 * i] : 0.0;  // eq. 9: grad p = c0^2 grad rho
+    const double gpy = taylor ? k.c0 * k.c0 * grad_rho[2 * i + 1] : 0.0;
     if (k.wall_pressure)
       for_each_neighbour(ghost_pairs, i, [&](int g, int q) {
-        const double p_ghost = pi + rhoi * (k.body_x * ghost_pairs.ex[q] + k.body_y * ghost_pairs.ey[q]);
+        const double rgx = ghost_pairs.ex[q], rgy = ghost_pairs.ey[q];  // r_g - r_i
+        double p_ghost = pi + rhoi * (k.body_x * rgx + k.body_y * rgy);
+        if (taylor && !ghosts.corner[g]) {
+          // replace the tangential part of the body-force continuation by the particle's own gradient
+          const double tx = -ghosts.ny[g], ty = ghosts.nx[g], along = tx * rgx + ty * rgy;
+          p_ghost += (gpx * tx + gpy * ty - rhoi * (k.body_x * tx + k.body_y * ty)) * along;
+        }
         double s = -(pi + p_ghost) * ghosts.volume[g] / rhoi * -ghost_pairs.f[q];
         // eq. 8 with the ghost's velocity: mirrored (free slip, u_g - u_i = -2 (u_i.n) n, only the wall-normal
         // motion is damped) or reversed (no slip, u_g - u_i = -2 u_i)

@@ -56,6 +56,7 @@ WallGhosts build_wall_ghosts(const FluidParams& p, double support) {
         g.nx.push_back(nx);
         g.ny.push_back(ny);
         g.internal.push_back(internal);
+        g.corner.push_back(k < 0 || k > n ? 1 : 0);  // past the end of a horizontal wall: behind the side wall too
       }
     }
   };

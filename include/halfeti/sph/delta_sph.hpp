@@ -43,10 +43,12 @@ struct RateConstants {
   double body_x, body_y;          // inertial (-a_g) and gravity body force
 };
 
-// Momentum (eqs. 4, 8 + tensile correction + walls + body force) of the owned particles.
+// Momentum (eqs. 4, 8 + tensile correction + walls + body force) of the owned particles. grad_rho: the owned
+// particles' renormalised density gradient (eqs. 6-7), from which the wall ghosts' pressure is continued along
+// the wall (FluidParams::wall_ghost_pressure = kTaylor); empty: continued with the body force (kBodyForce).
 void momentum_rates(const ParticleView& pv, const PairList& pairs, const PairList& wall_pairs,
                     const WallParticles& walls, const PairList& ghost_pairs, const WallGhosts& ghosts,
-                    const RateConstants& k, Rates& out);
+                    const std::vector<double>& grad_rho, const RateConstants& k, Rates& out);
 
 // Continuity with density diffusion (eqs. 3, 5) and the XSPH velocity (eq. 11). Called with the kicked
 // velocities (symplectic Euler: the density sees the new velocity, which keeps the acoustic modes stable).

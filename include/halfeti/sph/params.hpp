@@ -8,6 +8,9 @@
 
 namespace halfeti::sph {
 
+// Continuation of the pressure onto the wall ghosts (see FluidParams::wall_ghost_pressure).
+enum class WallGhostPressure { kTaylor, kBodyForce };
+
 enum class Scheme { kDeltaSph, kStandard };  // standard = no density diffusion (delta term off)
 
 // A rectangle filled with still water on a square lattice of spacing dx; its top is the free surface used for the
@@ -64,6 +67,11 @@ struct FluidParams {
   double wall_repulsion = 0.01;              // A = wall_repulsion * c0^2 / h
   bool wall_pressure = true;                 // wall ghosts: pressure and velocity of the fluid behind the wall
   bool wall_no_slip = false;                 // viscous term sees the walls as no-slip (default free slip)
+  // How the wall ghosts' pressure is continued from the particle that sees them (docs/sph.md "Walls"):
+  // kTaylor: p_g = p_i + rho_i (b.n)(n.r_gi) + (grad p_i.t)(t.r_gi), the wall condition across the wall and the
+  // particle's own pressure gradient (eqs. 6, 9) along it; kBodyForce: p_g = p_i + rho_i b.r_gi (Adami et al.
+  // 2012), which holds up films on vertical walls (kept for comparison).
+  WallGhostPressure wall_ghost_pressure = WallGhostPressure::kTaylor;
 
   // Time step
   double cfl = 0.2;

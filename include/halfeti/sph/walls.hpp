@@ -25,6 +25,7 @@ struct WallGhosts {
   std::vector<double> x, y, volume;
   std::vector<double> nx, ny;  // normal of their wall (into the fluid)
   std::vector<int> internal;   // index of the internal wall they stand behind, -1 for the tank walls
+  std::vector<char> corner;    // 1 in a corner quadrant (behind two tank walls): both directions are wall normals
   std::size_t size() const { return x.size(); }
 };
 

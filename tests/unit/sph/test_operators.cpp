@@ -130,7 +130,7 @@ TEST(DeltaSph, ArtificialViscosityDissipates) {
   c.c0 = 10.0;
   c.rho0 = 1000.0;
   Rates r;
-  momentum_rates(pv, pairs, PairList::none(2), WallParticles{}, PairList::none(2), WallGhosts{}, c, r);
+  momentum_rates(pv, pairs, PairList::none(2), WallParticles{}, PairList::none(2), WallGhosts{}, {}, c, r);
   EXPECT_LT(r.ax[0] * vx[0], 0.0);
   EXPECT_LT(r.ax[1] * vx[1], 0.0);
   EXPECT_DOUBLE_EQ(r.ax[0], -r.ax[1]);
