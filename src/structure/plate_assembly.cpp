@@ -35,11 +35,17 @@ void PlateSolver::build_matrix() {
   // Block rows are this rank's nodes in PETSc order; a coupling is "diagonal" when both nodes are owned here.
   const auto adjacency = node_adjacency();
   const int owned = partition_.owned_blocks;
-  std::vector<PetscInt> blocks_per_row(owned, 0), off_diagonal(owned, 0);
+  // Counts of blocks per block row: in the owned columns, elsewhere, and on or right of the diagonal (for the
+  // symmetric SBAIJ formats, which store the upper triangle only).
+  std::vector<PetscInt> blocks_per_row(owned, 0), off_diagonal(owned, 0), upper(owned, 0), upper_off(owned, 0);
   for (int n = 0; n < node_count(); ++n) {
     if (partition_.node_rank[n] != rank_) continue;
     const int row = partition_.petsc_node[n] - partition_.first_block;
-    for (int m : adjacency[n]) ++(partition_.node_rank[m] == rank_ ? blocks_per_row[row] : off_diagonal[row]);
+    for (int m : adjacency[n]) {
+      const bool here = partition_.node_rank[m] == rank_;
+      ++(here ? blocks_per_row[row] : off_diagonal[row]);
+      if (partition_.petsc_node[m] >= partition_.petsc_node[n]) ++(here ? upper[row] : upper_off[row]);
+    }
   }
   const PetscInt n = dof_count(), n_local = 2 * owned;
   HALFETI_PETSC_CALL(MatCreate(comm_.get(), matrix_.out()));
@@ -49,8 +55,13 @@ void PlateSolver::build_matrix() {
   HALFETI_PETSC_CALL(MatSetOptionsPrefix(matrix_.get(), "structure_"));
   HALFETI_PETSC_CALL(MatSetFromOptions(matrix_.get()));
   HALFETI_PETSC_CALL(MatXAIJSetPreallocation(matrix_.get(), 2, blocks_per_row.data(), off_diagonal.data(),
-                                             nullptr, nullptr));
+                                             upper.data(), upper_off.data()));
   HALFETI_PETSC_CALL(MatSetOption(matrix_.get(), MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+  PetscBool symmetric_storage = PETSC_FALSE;
+  HALFETI_PETSC_CALL(PetscObjectTypeCompareAny(reinterpret_cast<PetscObject>(matrix_.get()), &symmetric_storage,
+                                               MATSEQSBAIJ, MATMPISBAIJ, ""));
+  // K_eff is symmetric: the SBAIJ formats keep the upper triangle, the lower one is dropped on insertion.
+  if (symmetric_storage) HALFETI_PETSC_CALL(MatSetOption(matrix_.get(), MAT_IGNORE_LOWER_TRIANGULAR, PETSC_TRUE));
   HALFETI_PETSC_CALL(MatCreateVecs(matrix_.get(), solution_.out(), rhs_.out()));
   matrix_dirty_ = false;
 }
@@ -85,15 +96,15 @@ void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& n
     residual_.setZero();
 
   Q9Vector force;
-  Q9Matrix tangent;
-  RowMajor18 element_matrix;
+  Q9Matrix element_matrix;  // component-major: row/column 9 i + a = component i of local node a
+  Eigen::Matrix<double, kQ9Nodes, 2> element_acceleration;
   for (int e : partition_.owned_elements) {
     const auto& nodes = mesh_.elements[e];
     const Q9Coordinates displacement = element_displacement(e);
     try {
       if (stiffness_coefficient != 0.0) {
-        integrator_->internal_force_and_tangent(geometry_[e], displacement, force, tangent);
-        element_matrix = tangent;
+        integrator_->internal_force_and_tangent_component_major(geometry_[e], displacement, force,
+                                                                element_matrix);
       } else {
         integrator_->internal_force(geometry_[e], displacement, force);
         element_matrix.setZero();
@@ -105,16 +116,19 @@ void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& n
                               << ") m, t = " << time_ << " s; hint: smaller dt, or check the loads");
     }
     const auto& m = mass_[e];
-    for (int a = 0; a < kQ9Nodes; ++a) {
-      Eigen::Vector2d inertia = Eigen::Vector2d::Zero();
-      for (int b = 0; b < kQ9Nodes; ++b) {
-        if (inertia_in_residual) inertia += m(a, b) * a_.segment<2>(2 * nodes[b]);
-        element_matrix(2 * a, 2 * b) += mass_coefficient * m(a, b);
-        element_matrix(2 * a + 1, 2 * b + 1) += mass_coefficient * m(a, b);
-      }
-      residual_.segment<2>(2 * nodes[a]) -= force.segment<2>(2 * a) + inertia;
+    if (mass_coefficient != 0.0) {
+      element_matrix.block<kQ9Nodes, kQ9Nodes>(0, 0) += mass_coefficient * m;
+      element_matrix.block<kQ9Nodes, kQ9Nodes>(kQ9Nodes, kQ9Nodes) += mass_coefficient * m;
     }
-    element_sink(e, element_matrix.data());
+    if (inertia_in_residual) {
+      for (int b = 0; b < kQ9Nodes; ++b) element_acceleration.row(b) = a_.segment<2>(2 * nodes[b]).transpose();
+      const Eigen::Matrix<double, kQ9Nodes, 2> inertia = m.lazyProduct(element_acceleration);
+      for (int a = 0; a < kQ9Nodes; ++a)
+        residual_.segment<2>(2 * nodes[a]) -= force.segment<2>(2 * a) + inertia.row(a).transpose();
+    } else {
+      for (int a = 0; a < kQ9Nodes; ++a) residual_.segment<2>(2 * nodes[a]) -= force.segment<2>(2 * a);
+    }
+    element_sink(e, element_matrix);
   }
 
   // Nodal elements (cables): their force is internal (enters as F), their tangent adds to K. Rank 0 evaluates
@@ -163,8 +177,15 @@ void PlateSolver::add_newton_system(Mat matrix, Vec rhs, PetscInt offset) {
   PetscInt block_size = 1;
   HALFETI_PETSC_CALL(MatGetBlockSize(matrix, &block_size));
   const bool blocked = block_size == 2 && offset % 2 == 0;
-  auto element_sink = [&](int e, const double* values) {
+  RowMajor18 interleaved;
+  auto element_sink = [&](int e, const Q9Matrix& component_major) {
     const auto& nodes = mesh_.elements[e];
+    for (int b = 0; b < kQ9Nodes; ++b)
+      for (int a = 0; a < kQ9Nodes; ++a)
+        for (int i = 0; i < 2; ++i)
+          for (int k = 0; k < 2; ++k)
+            interleaved(2 * a + i, 2 * b + k) = component_major(kQ9Nodes * i + a, kQ9Nodes * k + b);
+    const double* values = interleaved.data();
     PetscInt rows[kQ9Dofs];
     // Negative indices make PETSc skip the clamped rows and columns.
     const auto& to_petsc = partition_.petsc_node;
@@ -229,13 +250,16 @@ void PlateSolver::build_scatter_map() {
                   "entry (" << row << ", " << col << ") not in pattern");
     return static_cast<PetscInt>(hit - ja);
   };
+  // In the storage order of the element's component-major, column-major matrix (entry c * 18 + r, with
+  // r = 9 i + a the row of component i of local node a).
   element_scatter_.reserve(mesh_.elements.size() * kQ9Dofs * kQ9Dofs);
   for (const auto& nodes : mesh_.elements)
-    for (int r = 0; r < kQ9Dofs; ++r)
-      for (int c = 0; c < kQ9Dofs; ++c) {
-        const int rn = nodes[r / 2], cn = nodes[c / 2];
-        element_scatter_.push_back(clamped_[rn] || clamped_[cn] ? -1
-                                                                : position(2 * rn + r % 2, 2 * cn + c % 2));
+    for (int c = 0; c < kQ9Dofs; ++c)
+      for (int r = 0; r < kQ9Dofs; ++r) {
+        const int rn = nodes[r % kQ9Nodes], cn = nodes[c % kQ9Nodes];
+        element_scatter_.push_back(clamped_[rn] || clamped_[cn]
+                                       ? -1
+                                       : position(2 * rn + r / kQ9Nodes, 2 * cn + c / kQ9Nodes));
       }
   for (int node : mesh_.clamped_nodes)
     for (int c = 0; c < 2; ++c) clamped_diagonal_.push_back(position(2 * node + c, 2 * node + c));
@@ -262,7 +286,8 @@ void PlateSolver::assemble_newton_system() {
     PetscScalar* values = nullptr;
     HALFETI_PETSC_CALL(MatZeroEntries(a));
     HALFETI_PETSC_CALL(MatSeqAIJGetArray(a, &values));
-    auto element_sink = [&](int e, const double* m) {
+    auto element_sink = [&](int e, const Q9Matrix& component_major) {
+      const double* m = component_major.data();
       const PetscInt* where = element_scatter_.data() + static_cast<std::size_t>(e) * kQ9Dofs * kQ9Dofs;
       for (int q = 0; q < kQ9Dofs * kQ9Dofs; ++q)
         if (where[q] >= 0) values[where[q]] += m[q];

@@ -141,6 +141,7 @@ class PlateSolver {
   Vec newton_residual() const { return rhs_.get(); }
   double residual_norm() const { return residual_norm_; }
   Vec solve_newton_increment();            // KSP on the owned system; throws NumericalError on failure
+  KSP newton_ksp() const { return ksp_.get(); }  // the plate's KSP (options prefix -structure_), for timing
   void apply_increment(const double* du);  // dof_count() entries; clamped entries ignored
   // On one rank any Vec (entries offset + petsc_dof()); on several, the Vec of solve_newton_increment() or
   // one with the same layout (offset 0): it is gathered to every rank.
@@ -167,7 +168,7 @@ class PlateSolver {
   enum class Mode { kDynamic, kStatic, kInitialAcceleration };
   void build_matrix();
   void build_scatter_map();
-  // Computes residual_ and hands each element's effective matrix (row-major 18 x 18) to element_sink(e,
+  // Computes residual_ and hands each element's effective matrix (component-major Q9Matrix) to element_sink(e,
   // values) and each nodal element's (dofs, row-major values) to nodal_sink; shared by both assembly paths.
   template <typename ElementSink, typename NodalSink>
   void compute_newton_terms(ElementSink&& element_sink, NodalSink&& nodal_sink);

@@ -43,11 +43,17 @@ struct Q9Geometry {
   std::array<Q9Point, 9> full;     // 3x3 Gauss
   std::array<Q9Point, 4> reduced;  // 2x2 Gauss (bulk part under selective reduced integration)
   double area = 0.0;
+  // L_ab = sum over the 3x3 points of w dN_a/dX . dN_b/dX: the part of the Neo-Hookean tangent that does not
+  // depend on the deformation (mu L in each displacement component), summed once.
+  Eigen::Matrix<double, kQ9Nodes, kQ9Nodes> laplacian = Eigen::Matrix<double, kQ9Nodes, kQ9Nodes>::Zero();
 };
 
 struct Q9Options {
   PlaneHypothesis hypothesis = PlaneHypothesis::kPlaneStrain;
   bool selective_reduced_integration = true;  // applies in plane strain only
+  // Neo-Hookean in plane strain (the default) uses a closed-form kernel (see q9_element.cpp); false forces the
+  // general material path everywhere (tests compare the two).
+  bool specialised_kernel = true;
 };
 
 class HyperelasticQ9 {
@@ -64,6 +70,10 @@ class HyperelasticQ9 {
   // f_int and its tangent K = df_int/du (material + geometric stiffness).
   void internal_force_and_tangent(const Q9Geometry& g, const Q9Coordinates& u, Q9Vector& force,
                                   Q9Matrix& tangent) const;
+  // The same tangent in component-major order: row/column 9 i + a is component i of node a (all four 9x9
+  // blocks filled). The assembly reads this form directly.
+  void internal_force_and_tangent_component_major(const Q9Geometry& g, const Q9Coordinates& u, Q9Vector& force,
+                                                  Q9Matrix& component_major) const;
   // Consistent mass as a 9x9 scalar matrix (the same for x and y): M_ab = rho int N_a N_b dA.
   static Eigen::Matrix<double, kQ9Nodes, kQ9Nodes> scalar_mass(const Q9Geometry& g, double density);
   // Cauchy stress (Voigt [11, 22, 12, 33]) at each 3x3 point, for probes.
@@ -73,12 +83,17 @@ class HyperelasticQ9 {
 
  private:
   bool split() const;
+  // Closed-form Neo-Hookean plane-strain point loop (fills force and the component-major tangent).
+  template <bool kTangent>
+  void neo_hookean_plane_strain(const Q9Geometry& g, const Q9Coordinates& u, Q9Vector& force,
+                                Q9Matrix* component_major) const;
   template <bool kTangent>
   void accumulate(const Q9Point& p, const Q9Coordinates& u, EnergyPart part, Q9Vector& force,
                   Q9Matrix* tangent) const;
 
   const Material& material_;
   Q9Options options_;
+  bool closed_form_ = false;  // neo_hookean_plane_strain() applies
 };
 
 // Q9 shape functions and their derivatives on the reference square.
