@@ -51,7 +51,14 @@ void PlateSolver::build_matrix() {
   HALFETI_PETSC_CALL(MatCreate(comm_.get(), matrix_.out()));
   HALFETI_PETSC_CALL(MatSetSizes(matrix_.get(), n_local, n_local, n, n));
   HALFETI_PETSC_CALL(MatSetBlockSize(matrix_.get(), 2));
-  HALFETI_PETSC_CALL(MatSetType(matrix_.get(), MATAIJ));
+  // Symmetric storage (upper triangle) when the factorisation is a Cholesky one, AIJ otherwise;
+  // -structure_mat_type overrides.
+  PC pc = nullptr;
+  HALFETI_PETSC_CALL(KSPGetPC(ksp_.get(), &pc));
+  PetscBool cholesky = PETSC_FALSE;
+  HALFETI_PETSC_CALL(
+      PetscObjectTypeCompareAny(reinterpret_cast<PetscObject>(pc), &cholesky, PCCHOLESKY, PCICC, ""));
+  HALFETI_PETSC_CALL(MatSetType(matrix_.get(), cholesky ? MATSBAIJ : MATAIJ));
   HALFETI_PETSC_CALL(MatSetOptionsPrefix(matrix_.get(), "structure_"));
   HALFETI_PETSC_CALL(MatSetFromOptions(matrix_.get()));
   HALFETI_PETSC_CALL(MatXAIJSetPreallocation(matrix_.get(), 2, blocks_per_row.data(), off_diagonal.data(),
@@ -227,11 +234,16 @@ void PlateSolver::add_newton_system(Mat matrix, Vec rhs, PetscInt offset) {
 
 void PlateSolver::build_scatter_map() {
   element_scatter_.clear();
+  element_scatter_start_.clear();
   clamped_diagonal_.clear();
-  PetscBool is_seqaij = PETSC_FALSE;
+  symmetric_storage_ = false;
+  PetscBool is_seqaij = PETSC_FALSE, is_seqsbaij = PETSC_FALSE;
   HALFETI_PETSC_CALL(
       PetscObjectTypeCompare(reinterpret_cast<PetscObject>(matrix_.get()), MATSEQAIJ, &is_seqaij));
-  if (!is_seqaij) return;
+  HALFETI_PETSC_CALL(
+      PetscObjectTypeCompare(reinterpret_cast<PetscObject>(matrix_.get()), MATSEQSBAIJ, &is_seqsbaij));
+  if (!is_seqaij && !is_seqsbaij) return;
+  symmetric_storage_ = is_seqsbaij;
   // Fix the pattern with one pass of the general path, then look every entry up once.
   mode_ = Mode::kStatic;
   HALFETI_PETSC_CALL(MatZeroEntries(matrix_.get()));
@@ -239,31 +251,43 @@ void PlateSolver::build_scatter_map() {
   HALFETI_PETSC_CALL(MatAssemblyBegin(matrix_.get(), MAT_FINAL_ASSEMBLY));
   HALFETI_PETSC_CALL(MatAssemblyEnd(matrix_.get(), MAT_FINAL_ASSEMBLY));
   HALFETI_PETSC_CALL(MatSetOption(matrix_.get(), MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE));
+  // SeqAIJ: scalar rows. SeqSBAIJ: block rows of the upper triangle, each 2x2 block stored column by column.
   PetscInt n = 0;
   const PetscInt *ia = nullptr, *ja = nullptr;
   PetscBool done = PETSC_FALSE;
-  HALFETI_PETSC_CALL(MatGetRowIJ(matrix_.get(), 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
-  HALFETI_CHECK(done, "MatGetRowIJ did not return the SeqAIJ structure");
-  auto position = [&](PetscInt row, PetscInt col) {
+  const PetscBool blocks = symmetric_storage_ ? PETSC_TRUE : PETSC_FALSE;
+  HALFETI_PETSC_CALL(MatGetRowIJ(matrix_.get(), 0, PETSC_FALSE, blocks, &n, &ia, &ja, &done));
+  HALFETI_CHECK(done, "MatGetRowIJ did not return the matrix structure");
+  auto find = [&](PetscInt row, PetscInt col) {
     const PetscInt* hit = std::lower_bound(ja + ia[row], ja + ia[row + 1], col);
-    HALFETI_CHECK(hit != ja + ia[row + 1] && *hit == col,
-                  "entry (" << row << ", " << col << ") not in pattern");
+    HALFETI_CHECK(hit != ja + ia[row + 1] && *hit == col, "entry (" << row << ", " << col << ") not in pattern");
     return static_cast<PetscInt>(hit - ja);
   };
+  // Position of (row, col) in the value array; -1 for the lower triangle of symmetric storage.
+  auto position = [&](PetscInt row, PetscInt col) -> PetscInt {
+    if (!symmetric_storage_) return find(row, col);
+    const PetscInt block_row = row / 2, block_col = col / 2;
+    if (block_col < block_row) return -1;
+    return 4 * find(block_row, block_col) + 2 * (col % 2) + row % 2;
+  };
   // In the storage order of the element's component-major, column-major matrix (entry c * 18 + r, with
-  // r = 9 i + a the row of component i of local node a).
+  // r = 9 i + a the row of component i of local node a); clamped rows and columns and the lower triangle of
+  // symmetric storage are left out.
   element_scatter_.reserve(mesh_.elements.size() * kQ9Dofs * kQ9Dofs);
-  for (const auto& nodes : mesh_.elements)
+  element_scatter_start_.push_back(0);
+  for (const auto& nodes : mesh_.elements) {
     for (int c = 0; c < kQ9Dofs; ++c)
       for (int r = 0; r < kQ9Dofs; ++r) {
         const int rn = nodes[r % kQ9Nodes], cn = nodes[c % kQ9Nodes];
-        element_scatter_.push_back(clamped_[rn] || clamped_[cn]
-                                       ? -1
-                                       : position(2 * rn + r / kQ9Nodes, 2 * cn + c / kQ9Nodes));
+        if (clamped_[rn] || clamped_[cn]) continue;
+        const PetscInt where = position(2 * rn + r / kQ9Nodes, 2 * cn + c / kQ9Nodes);
+        if (where >= 0) element_scatter_.push_back({c * kQ9Dofs + r, where});
       }
+    element_scatter_start_.push_back(element_scatter_.size());
+  }
   for (int node : mesh_.clamped_nodes)
     for (int c = 0; c < 2; ++c) clamped_diagonal_.push_back(position(2 * node + c, 2 * node + c));
-  HALFETI_PETSC_CALL(MatRestoreRowIJ(matrix_.get(), 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
+  HALFETI_PETSC_CALL(MatRestoreRowIJ(matrix_.get(), 0, PETSC_FALSE, blocks, &n, &ia, &ja, &done));
 }
 
 void PlateSolver::assemble_newton_system() {
@@ -285,12 +309,15 @@ void PlateSolver::assemble_newton_system() {
     ScopedTimer timer(timers_, "structure_assembly");
     PetscScalar* values = nullptr;
     HALFETI_PETSC_CALL(MatZeroEntries(a));
-    HALFETI_PETSC_CALL(MatSeqAIJGetArray(a, &values));
+    if (symmetric_storage_)
+      HALFETI_PETSC_CALL(MatSeqSBAIJGetArray(a, &values));
+    else
+      HALFETI_PETSC_CALL(MatSeqAIJGetArray(a, &values));
     auto element_sink = [&](int e, const Q9Matrix& component_major) {
       const double* m = component_major.data();
-      const PetscInt* where = element_scatter_.data() + static_cast<std::size_t>(e) * kQ9Dofs * kQ9Dofs;
-      for (int q = 0; q < kQ9Dofs * kQ9Dofs; ++q)
-        if (where[q] >= 0) values[where[q]] += m[q];
+      const auto* end = element_scatter_.data() + element_scatter_start_[e + 1];
+      for (const auto* entry = element_scatter_.data() + element_scatter_start_[e]; entry != end; ++entry)
+        values[entry->second] += m[entry->first];
     };
     std::vector<std::pair<std::vector<PetscInt>, std::vector<double>>> nodal;
     auto nodal_sink = [&](const std::vector<int>& dofs, const double* m) {
@@ -299,7 +326,10 @@ void PlateSolver::assemble_newton_system() {
     };
     compute_newton_terms(element_sink, nodal_sink);
     for (PetscInt d : clamped_diagonal_) values[d] = 1.0;
-    HALFETI_PETSC_CALL(MatSeqAIJRestoreArray(a, &values));
+    if (symmetric_storage_)
+      HALFETI_PETSC_CALL(MatSeqSBAIJRestoreArray(a, &values));
+    else
+      HALFETI_PETSC_CALL(MatSeqAIJRestoreArray(a, &values));
     for (const auto& [idx, m] : nodal) {
       const PetscInt k = static_cast<PetscInt>(idx.size());
       HALFETI_PETSC_CALL(MatSetValues(a, k, idx.data(), k, idx.data(), m.data(), ADD_VALUES));

@@ -63,19 +63,30 @@ PlateSolver::PlateSolver(MPI_Comm comm, const StructureParameters& params,
        {&prescribed_loads_, &external_forces_, &body_forces_, &residual_, &u_, &v_, &a_, &u_n_, &v_n_, &a_n_})
     *v = Eigen::VectorXd::Zero(dof_count());
 
-  // Direct LU by default (small banded systems); -structure_ksp_type / -structure_pc_type override.
+  // A direct solve by default (small banded systems); -structure_ksp_type / -structure_pc_type override.
+  // One rank: K_eff is symmetric (hyperelastic tangent, cables, Newmark mass), so PETSc's Cholesky on the upper
+  // triangle (SeqSBAIJ, block size 2) in the natural order, which is banded (nodes numbered across the
+  // thickness first): half the work of the LU (docs/structure.md, "Cost of one Newton iteration"). Several
+  // ranks: LU by MUMPS (PETSc's own factorisations are sequential).
   HALFETI_PETSC_CALL(KSPCreate(comm_.get(), ksp_.out()));
   HALFETI_PETSC_CALL(KSPSetOptionsPrefix(ksp_.get(), "structure_"));
   HALFETI_PETSC_CALL(KSPSetType(ksp_.get(), KSPPREONLY));
   PC pc = nullptr;
   HALFETI_PETSC_CALL(KSPGetPC(ksp_.get(), &pc));
-  HALFETI_PETSC_CALL(PCSetType(pc, PCLU));
-  // Reverse Cuthill-McKee keeps the LU factors of the banded plate narrow: measured fastest of nd, rcm,
-  // natural and qmd for the 2 x 60 plate (docs/structure.md).
-  HALFETI_PETSC_CALL(PCFactorSetMatOrderingType(pc, MATORDERINGRCM));
-  // PETSc's own LU is sequential; on several ranks the default direct solver is MUMPS.
-  if (size_ > 1) HALFETI_PETSC_CALL(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  if (size_ > 1) {
+    HALFETI_PETSC_CALL(PCSetType(pc, PCLU));
+    HALFETI_PETSC_CALL(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  } else {
+    HALFETI_PETSC_CALL(PCSetType(pc, PCCHOLESKY));
+    HALFETI_PETSC_CALL(PCFactorSetMatOrderingType(pc, MATORDERINGNATURAL));
+  }
   HALFETI_PETSC_CALL(KSPSetFromOptions(ksp_.get()));
+  // A PETSc LU chosen on the command line (-structure_pc_type lu) keeps the ordering measured fastest for it,
+  // reverse Cuthill-McKee, unless the command line names one.
+  PetscBool lu = PETSC_FALSE, ordering_given = PETSC_FALSE;
+  HALFETI_PETSC_CALL(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(pc), PCLU, &lu));
+  HALFETI_PETSC_CALL(PetscOptionsHasName(nullptr, "structure_", "-pc_factor_mat_ordering_type", &ordering_given));
+  if (lu && size_ == 1 && !ordering_given) HALFETI_PETSC_CALL(PCFactorSetMatOrderingType(pc, MATORDERINGRCM));
 }
 
 PlateSolver::~PlateSolver() = default;

@@ -206,9 +206,14 @@ class PlateSolver {
   OwnedVec gathered_;
   PetscOwner<VecScatter, VecScatterDestroy> to_all_;
   bool matrix_dirty_ = true;
-  // Position of every element matrix entry in the SeqAIJ value array (-1: clamped), so the owned matrix is
-  // filled without PETSc's per-entry search (which cost ~40% of an iteration); empty for other matrix types.
-  std::vector<PetscInt> element_scatter_, clamped_diagonal_;
+  // (entry of the element's component-major matrix, position in the value array) for every stored entry of
+  // every element, SeqAIJ or SeqSBAIJ (upper triangle), so the owned matrix is filled without PETSc's per-entry
+  // search (which cost ~40% of an iteration); empty for other matrix types. Element e's entries start at
+  // element_scatter_start_[e].
+  std::vector<std::pair<int, PetscInt>> element_scatter_;
+  std::vector<std::size_t> element_scatter_start_;
+  std::vector<PetscInt> clamped_diagonal_;
+  bool symmetric_storage_ = false;  // the owned matrix is SeqSBAIJ
   PhaseTimers timers_;
 };
 
