@@ -41,8 +41,9 @@ std::string format(const char* fmt, double a) {
   return buf;
 }
 
-// The structure solves on world rank 0 alone; its failure must stop every rank together (no rank may be left
-// waiting in a collective call), so rank 0 runs `work`, then shares the outcome.
+// The structure solves on its own ranks (world rank 0 among them, and the plate's failures are raised on all of
+// them together); its failure must stop every rank together (no rank may be left waiting in a collective call),
+// so the structure's ranks run `work`, then rank 0 shares the outcome.
 template <class Work>
 void on_structure_rank(MPI_Comm comm, bool structure_rank, Work&& work) {
   std::string failure;
@@ -108,14 +109,16 @@ void read_parameters(const scene::Scene& scene, Parts& parts) {
 
 namespace {
 
-// The plate and its cables live on world rank 0 (one rank: the structure's own communicator).
+// The plate and its cables live on the first structure.ranks world ranks (the structure's own communicator; rank 0
+// is always one of them and holds what probes and outputs read).
 void build_structure(Parts& parts, MPI_Comm comm) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
+  const bool member = rank < parts.structure_setup->ranks;
   MPI_Comm sub = MPI_COMM_NULL;
-  MPI_Comm_split(comm, rank == 0 ? 0 : MPI_UNDEFINED, 0, &sub);
+  MPI_Comm_split(comm, member ? 0 : MPI_UNDEFINED, rank, &sub);
   parts.structure_comm = Communicator::adopt(sub);
-  parts.structure_rank = rank == 0;
+  parts.structure_rank = member;
   if (!parts.structure_rank) return;
   const StructureSetup& s = *parts.structure_setup;
   parts.plate = std::make_unique<structure::PlateSolver>(parts.structure_comm.get(), s.params, parts.motion.get());
@@ -326,7 +329,7 @@ void Simulation::write_plate_fields(double t) {
   ScopedTimer timer(timers_, "fields");
   std::vector<double> x, y, ux, uy;
   std::vector<std::int64_t> cells;
-  if (const auto* plate = parts_.plate.get()) {
+  if (const auto* plate = rank_ == 0 ? parts_.plate.get() : nullptr) {  // the state is replicated: write it once
     const auto& mesh = plate->mesh();
     for (int n = 0; n < plate->node_count(); ++n) {
       const Eigen::Vector2d p = plate->position(n), u = plate->displacement(n);
@@ -370,9 +373,9 @@ void Simulation::write_checkpoint(const std::string& label) {
     log_->line("checkpoint (" + label + "): " + path);
   }
   if (plate_checkpoints_) {
-    // The plate's Newmark state on its reference nodes (rank 0 holds it; the others write nothing).
+    // The plate's Newmark state on its reference nodes (rank 0 writes it; the others write nothing).
     std::vector<double> x, y, u[2], v[2], a[2];
-    if (const auto* plate = parts_.plate.get()) {
+    if (const auto* plate = rank_ == 0 ? parts_.plate.get() : nullptr) {
       for (int n = 0; n < plate->node_count(); ++n) {
         x.push_back(plate->mesh().nodes[n].x());
         y.push_back(plate->mesh().nodes[n].y());

@@ -1,5 +1,7 @@
 #include "halfeti/app/structure_section.hpp"
 
+#include <mpi.h>
+
 #include <set>
 
 #include "halfeti/cable/catenary.hpp"
@@ -64,6 +66,11 @@ std::shared_ptr<const Schema> structure_schema() {
     s->add(Key::real("time_step", "step of a scene without water (with water the fluid sets it)", "s").positive());
     s->add(Key::boolean("start_static", "solve the static equilibrium (gravity, cables, loads) before t = 0")
                .def(false));
+    s->add(Key::integer("ranks",
+                        "MPI ranks of the structure's own communicator (the first N ranks of the run; METIS splits "
+                        "the mesh, MUMPS solves); at most the run's rank count, and 1 in scenes with water")
+               .def(1)
+               .in(1, 65536));
     s->add(Key::list("loads", "dead point loads", load_schema()));
     return std::shared_ptr<const Schema>(s);
   }();
@@ -125,6 +132,16 @@ StructureSetup structure_setup(const scene::Node& root) {
     HALFETI_USER_ERROR(s.key_path("time_step") << ": required when the scene has no `fluid:` (the water sets the "
                                                << "step otherwise)");
   out.start_static = s.boolean("start_static");
+  out.ranks = static_cast<int>(s.integer("ranks"));
+  if (out.ranks > 1 && root.has("fluid"))
+    HALFETI_USER_ERROR(s.key_path("ranks") << ": " << out.ranks << ": scenes with water (coupled) need "
+                                           << "structure.ranks: 1 (the contact coupling solves the plate on one rank)");
+  int world = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &world);
+  if (out.ranks > world)
+    HALFETI_USER_ERROR(s.key_path("ranks") << ": " << out.ranks << " ranks for the structure, but the run has "
+                                           << world << " MPI rank(s) (structure.ranks must lie in [1, " << world
+                                           << "])");
   const structure::PlateMesh names_only = structure::make_plate_mesh(p.geometry);
   for (const auto& l : s.list("loads")) {
     const std::string node = l.string("node");

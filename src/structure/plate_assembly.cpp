@@ -1,6 +1,7 @@
 // Global assembly of the Newton system of the plate: solid elements, inertia, nodal elements (cables), loads.
 #include <algorithm>
 #include <set>
+#include <sstream>
 
 #include "halfeti/core/error.hpp"
 #include "halfeti/structure/plate_solver.hpp"
@@ -102,6 +103,9 @@ void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& n
   else
     residual_.setZero();
 
+  // A numerical failure (an inverted point, a cable that cannot be solved) is raised on every rank together
+  // (below), so that no rank is left waiting in the residual's reduction.
+  std::string failure;
   Q9Vector force;
   Q9Matrix element_matrix;  // component-major: row/column 9 i + a = component i of local node a
   Eigen::Matrix<double, kQ9Nodes, 2> element_acceleration;
@@ -118,9 +122,11 @@ void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& n
       }
     } catch (const NumericalError& error) {
       const Eigen::Vector2d centre = position(nodes[4]);
-      HALFETI_NUMERICAL_ERROR(error.what()
-                              << " in element " << e << " at (" << centre.x() << ", " << centre.y()
-                              << ") m, t = " << time_ << " s; hint: smaller dt, or check the loads");
+      std::ostringstream what;
+      what << error.what() << " in element " << e << " at (" << centre.x() << ", " << centre.y()
+           << ") m, t = " << time_ << " s; hint: smaller dt, or check the loads";
+      failure = what.str();
+      break;
     }
     const auto& m = mass_[e];
     if (mass_coefficient != 0.0) {
@@ -141,13 +147,18 @@ void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& n
   // Nodal elements (cables): their force is internal (enters as F), their tangent adds to K. Rank 0 evaluates
   // them all (a cable is a handful of operations).
   for (NodalElement* ne : nodal_elements_) {
-    if (rank_ != 0) break;
+    if (rank_ != 0 || !failure.empty()) break;
     const std::vector<int> nodes = ne->nodes();
     std::vector<Eigen::Vector2d> positions;
     for (int n : nodes) positions.push_back(mesh_.nodes[n] + u_.segment<2>(2 * n));
     Eigen::VectorXd ne_force;
     Eigen::MatrixXd ne_tangent;
-    ne->evaluate(positions, ne_force, ne_tangent);
+    try {
+      ne->evaluate(positions, ne_force, ne_tangent);
+    } catch (const NumericalError& error) {
+      failure = error.what();
+      break;
+    }
     const int k = 2 * static_cast<int>(nodes.size());
     HALFETI_CHECK(ne_force.size() == k && ne_tangent.rows() == k && ne_tangent.cols() == k,
                   "nodal element returned force/tangent of the wrong size");
@@ -160,6 +171,19 @@ void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& n
         stiffness_coefficient * ne_tangent;
     nodal_sink(dofs, values.data());
   }
+  if (size_ > 1) {
+    // The first failing rank's message, on every rank.
+    const int mine = failure.empty() ? size_ : rank_;
+    int first = size_;
+    MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, comm_.get());
+    if (first < size_) {
+      int length = static_cast<int>(failure.size());
+      MPI_Bcast(&length, 1, MPI_INT, first, comm_.get());
+      failure.resize(static_cast<std::size_t>(length));
+      MPI_Bcast(failure.data(), length, MPI_CHAR, first, comm_.get());
+    }
+  }
+  if (!failure.empty()) throw NumericalError(failure);
   if (size_ > 1) {
     // Reduce to rank 0 and broadcast, so that every rank holds bitwise the same residual and takes the same
     // Newton decisions.

@@ -27,6 +27,7 @@ struct StructureSetup {
   double time_step = 0.0;  // s, used when the scene has no fluid
   std::vector<PointLoad> point_loads;
   bool start_static = false;  // solve the static equilibrium (gravity, cables, loads) before the first step
+  int ranks = 1;              // the structure's communicator: the first `ranks` world ranks (1 with water)
 };
 
 // One cable set between a wall anchor and a named plate node.

@@ -78,3 +78,26 @@ TEST(PlateRanks, PartitionOwnsEveryNodeOnce) {
 }
 
 }  // namespace
+
+namespace {
+
+// An element inverted on one rank only (the crushed top elements belong to one METIS part) stops every rank with
+// the same NumericalError instead of leaving the others waiting in the residual's reduction.
+TEST(PlateRanks, InvertedElementStopsEveryRank) {
+  hs::PlateSolver s(PETSC_COMM_WORLD, hs::testing::paper_plate(1, 10));
+  s.add_edge_load("top", Eigen::Vector2d(0.0, -5e7));  // Pa: crushes the top elements in the first iterate
+  std::string what;
+  try {
+    s.solve_static(0.0, 1);
+  } catch (const halfeti::NumericalError& e) {
+    what = e.what();
+  }
+  EXPECT_NE(what.find("in element"), std::string::npos) << what;
+  // The same message on every rank.
+  int length = static_cast<int>(what.size()), longest = 0, shortest = 0;
+  MPI_Allreduce(&length, &longest, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD);
+  MPI_Allreduce(&length, &shortest, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD);
+  EXPECT_EQ(longest, shortest);
+}
+
+}  // namespace
