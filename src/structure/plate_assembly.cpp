@@ -90,7 +90,7 @@ void PlateSolver::update_acceleration() {
 }
 
 template <typename ElementSink, typename NodalSink>
-void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& nodal_sink) {
+void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& nodal_sink, bool with_matrix) {
   const bool inertia_in_residual = mode_ == Mode::kDynamic;
   const double stiffness_coefficient = mode_ == Mode::kInitialAcceleration ? 0.0 : 1.0;
   const double mass_coefficient = mode_ == Mode::kDynamic ? 1.0 / (params_.newmark.beta * dt_ * dt_)
@@ -113,7 +113,7 @@ void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& n
     const auto& nodes = mesh_.elements[e];
     const Q9Coordinates displacement = element_displacement(e);
     try {
-      if (stiffness_coefficient != 0.0) {
+      if (with_matrix && stiffness_coefficient != 0.0) {
         integrator_->internal_force_and_tangent_component_major(geometry_[e], displacement, force,
                                                                 element_matrix);
       } else {
@@ -129,7 +129,7 @@ void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& n
       break;
     }
     const auto& m = mass_[e];
-    if (mass_coefficient != 0.0) {
+    if (with_matrix && mass_coefficient != 0.0) {
       element_matrix.block<kQ9Nodes, kQ9Nodes>(0, 0) += mass_coefficient * m;
       element_matrix.block<kQ9Nodes, kQ9Nodes>(kQ9Nodes, kQ9Nodes) += mass_coefficient * m;
     }
@@ -141,7 +141,7 @@ void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& n
     } else {
       for (int a = 0; a < kQ9Nodes; ++a) residual_.segment<2>(2 * nodes[a]) -= force.segment<2>(2 * a);
     }
-    element_sink(e, element_matrix);
+    if (with_matrix) element_sink(e, element_matrix);
   }
 
   // Nodal elements (cables): their force is internal (enters as F), their tangent adds to K. Rank 0 evaluates
@@ -167,6 +167,7 @@ void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& n
       residual_.segment<2>(2 * nodes[a]) -= ne_force.segment<2>(2 * a);
       for (int c = 0; c < 2; ++c) dofs[2 * a + c] = clamped_[nodes[a]] ? -1 : 2 * nodes[a] + c;
     }
+    if (!with_matrix) continue;
     const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> values =
         stiffness_coefficient * ne_tangent;
     nodal_sink(dofs, values.data());
@@ -368,6 +369,11 @@ void PlateSolver::assemble_newton_system() {
   HALFETI_PETSC_CALL(MatAssemblyEnd(a, MAT_FINAL_ASSEMBLY));
   HALFETI_PETSC_CALL(VecAssemblyBegin(rhs_.get()));
   HALFETI_PETSC_CALL(VecAssemblyEnd(rhs_.get()));
+}
+
+void PlateSolver::assemble_residual() {
+  ScopedTimer timer(timers_, "structure_assembly");
+  compute_newton_terms([](int, const Q9Matrix&) {}, [](const std::vector<int>&, const double*) {}, false);
 }
 
 }  // namespace halfeti::structure

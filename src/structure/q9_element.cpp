@@ -51,12 +51,23 @@ __attribute__((target_clones("avx2", "default"))) void rank_one_sums(
       l0[a] = cross_lambda[p] * c0[a];
       m1[a] = cross_m[p] * c1[a];
     }
-    for (int b = 0; b < kQ9Nodes; ++b) {
-      const double c0b = c0[b], c1b = c1[b];
-      for (int a = 0; a < kQ9Nodes; ++a) {
-        k00[b][a] += d0[a] * c0b;
-        k11[b][a] += d1[a] * c1b;
-        k01[b][a] += l0[a] * c1b + m1[a] * c0b;
+    if (cross_lambda[p] == 0.0) {  // a shear point: no lambda term in K_01
+      for (int b = 0; b < kQ9Nodes; ++b) {
+        const double c0b = c0[b], c1b = c1[b];
+        for (int a = 0; a < kQ9Nodes; ++a) {
+          k00[b][a] += d0[a] * c0b;
+          k11[b][a] += d1[a] * c1b;
+          k01[b][a] += m1[a] * c0b;
+        }
+      }
+    } else {
+      for (int b = 0; b < kQ9Nodes; ++b) {
+        const double c0b = c0[b], c1b = c1[b];
+        for (int a = 0; a < kQ9Nodes; ++a) {
+          k00[b][a] += d0[a] * c0b;
+          k11[b][a] += d1[a] * c1b;
+          k01[b][a] += l0[a] * c1b + m1[a] * c0b;
+        }
       }
     }
   }

@@ -170,8 +170,14 @@ class PlateSolver {
   void build_scatter_map();
   // Computes residual_ and hands each element's effective matrix (component-major Q9Matrix) to element_sink(e,
   // values) and each nodal element's (dofs, row-major values) to nodal_sink; shared by both assembly paths.
+  // with_matrix false: the residual and its norms only (element forces without tangents, no sinks called).
   template <typename ElementSink, typename NodalSink>
-  void compute_newton_terms(ElementSink&& element_sink, NodalSink&& nodal_sink);
+  void compute_newton_terms(ElementSink&& element_sink, NodalSink&& nodal_sink, bool with_matrix = true);
+  // The residual of the current iterate and its norms, without the matrix (newton_residual() is not updated):
+  // the convergence check after an increment in step() and solve_static().
+  void assemble_residual();
+  // The plate-alone Newton loop of step() and solve_static().
+  void newton_loop(double t, const char* what);
   void compute_external(double t);
   Q9Coordinates element_displacement(int e) const;
   void update_acceleration();
