@@ -57,10 +57,13 @@ void momentum_rates(const ParticleView& pv, const PairList& pairs, const PairLis
     max_mu = std::max(max_mu, k.h * mu_i);
 
     // Wall pressure: the eq. 4 pressure term over the ghost points behind the walls, their pressure continued
-    // from particle i as a first-order Taylor expansion, p_g = p_i + grad p . (r_g - r_i). Across the wall the
-    // wall condition gives dp/dn = rho_i b.n (the wall is at rest in the tank frame); along it the particle's own
-    // gradient c0^2 <grad rho>^L_i (eqs. 6, 9), so that a film with no pressure gradient of its own gets no
-    // support from the ghosts (with b along the wall too, Adami et al. 2012, they held up a fifth of its weight).
+    // from particle i as a first-order Taylor expansion, p_g = p_i + (dp/dn)(n.r_gi) + (dp/dt)(t.r_gi). Across
+    // the wall, the wall condition dp/dn = rho_i b.n (the wall is at rest in the tank frame). Along it, the
+    // particle's own gradient c0^2 <grad rho>^L_i.t (eqs. 6, 9): the hydrostatic slope rho_i b.t in still water
+    // (as Adami et al. 2012), none in a film whose pressure does not vary along the wall (the body force's slope
+    // there held up a fifth of a film's weight). It is bounded by rho_i |b|, so that the ghosts never accelerate
+    // a particle along the wall by more than the body force: unbounded, the gradient at the tip of a film in
+    // tension pushed the tip away from the film, which stretched it further (docs/sph.md "Wall films").
     // Corner quadrants lie behind two walls: the wall condition in both directions, p_g = p_i + rho_i b.r_gi.
     // Not clamped: a particle in tension (p_i < 0) next to a wall must see its tension continued behind the wall,
     // or the truncated fluid sum -(1/rho_i) sum (p_i + p_j) V_j grad W pushes it off the wall by about
@@ -68,14 +71,16 @@ void momentum_rates(const ParticleView& pv, const PairList& pairs, const PairLis
     const bool taylor = !grad_rho.empty();
     const double gpx = taylor ? k.c0 * k.c0 * grad_rho[2 * i] : 0.0;  // eq. 9: grad p = c0^2 grad rho
     const double gpy = taylor ? k.c0 * k.c0 * grad_rho[2 * i + 1] : 0.0;
+    const double slope_bound = rhoi * std::hypot(k.body_x, k.body_y);
     if (k.wall_pressure)
       for_each_neighbour(ghost_pairs, i, [&](int g, int q) {
         const double rgx = ghost_pairs.ex[q], rgy = ghost_pairs.ey[q];  // r_g - r_i
         double p_ghost = pi + rhoi * (k.body_x * rgx + k.body_y * rgy);
         if (taylor && !ghosts.corner[g]) {
-          // replace the tangential part of the body-force continuation by the particle's own gradient
+          // replace the body force's slope along the wall by the bounded slope of the particle's own gradient
           const double tx = -ghosts.ny[g], ty = ghosts.nx[g], along = tx * rgx + ty * rgy;
-          p_ghost += (gpx * tx + gpy * ty - rhoi * (k.body_x * tx + k.body_y * ty)) * along;
+          const double own = std::clamp(gpx * tx + gpy * ty, -slope_bound, slope_bound);
+          p_ghost += (own - rhoi * (k.body_x * tx + k.body_y * ty)) * along;
         }
         double s = -(pi + p_ghost) * ghosts.volume[g] / rhoi * -ghost_pairs.f[q];
         // eq. 8 with the ghost's velocity: mirrored (free slip, u_g - u_i = -2 (u_i.n) n, only the wall-normal
