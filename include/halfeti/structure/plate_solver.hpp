@@ -18,7 +18,8 @@
 //   }
 //   solver.end_step();
 //
-// step(t, dt) is exactly that loop with the plate alone.
+// step(t, dt) is that loop with the plate alone (its check after an increment assembles the residual only, which
+// gives the same residual bits, so the same iterates).
 //
 // Ranks: the structure runs on its own communicator. With more than one rank the elements are split by METIS,
 // the matrix is MPIAIJ in PETSc's numbering petsc_dof() (rows by owner rank) and solved with MUMPS; the state
