@@ -96,13 +96,19 @@ void read_parameters(const scene::Scene& scene, Parts& parts) {
         cable_setups(root, *parts.structure_setup, parts.fluid_params ? parts.fluid_params->density : 0.0);
   if (parts.fluid_params && parts.structure_setup) {
     parts.coupling_params = coupling_params(root);
-    // The water fills its blocks except where the plate stands (with half a spacing around it).
+    // The water fills its blocks except where the plate stands, as its lattice resolves it: the plate's faces
+    // rounded to the nearest lattice lines (ties outward, at least one column). The plate-wall ghosts stand at
+    // those lines, so that the first water row is half a spacing from them (docs/coupling.md, section 12).
     const auto& g = parts.structure_setup->params.geometry;
-    // A quarter spacing keeps the lattice points half a spacing from the faces and drops those too near the top.
-    const double half = 0.25 * parts.fluid_params->spacing;
-    parts.fluid_params->exclusions.push_back({g.base_centre.x() - 0.5 * g.thickness - half, g.base_centre.y() - half,
-                                              g.base_centre.x() + 0.5 * g.thickness + half,
-                                              g.base_centre.y() + g.height + half});
+    const auto& fp = *parts.fluid_params;
+    const double dx = fp.spacing, x0 = fp.water.front().x0, y0 = fp.water.front().y0;
+    const double left = g.base_centre.x() - 0.5 * g.thickness, right = g.base_centre.x() + 0.5 * g.thickness;
+    const double top = g.base_centre.y() + g.height;
+    const double lattice_left = x0 + dx * std::ceil((left - x0) / dx - 0.5);
+    const double lattice_right = std::max(x0 + dx * std::floor((right - x0) / dx + 0.5), lattice_left + dx);
+    const double lattice_top = y0 + dx * std::floor((top - y0) / dx + 0.5);
+    parts.plate_offsets = {lattice_right - right, left - lattice_left, lattice_top - top};
+    parts.fluid_params->exclusions.push_back({lattice_left, g.base_centre.y() - dx, lattice_right, lattice_top});
   }
 }
 }  // namespace
@@ -186,8 +192,8 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
   if (parts_.coupling_params) {
     parts_.coupling = std::make_unique<coupling::ContactCoupling>(comm_, parts_.plate.get(), *parts_.coupling_params);
     if (parts_.coupling_params->plate_wall) {
-      parts_.fluid->set_barriers(parts_.coupling->midline());
-      parts_.fluid->set_plate_outline(parts_.coupling->plate_outline());
+      parts_.fluid->set_plate_offsets(parts_.plate_offsets);
+      parts_.fluid->set_plate_outline(parts_.coupling->plate_outline());  // and its mid-line as the barrier
     } else {
       parts_.fluid->set_barriers(parts_.coupling->outline());
     }
@@ -280,8 +286,10 @@ double Simulation::advance_coupled() {
   f.finish();
   // The barrier: the plate's mid-line with the plate-wall ghosts (they stand for what the plate hides), its
   // outline in the paper's contact-only form.
-  f.set_barriers(plate_wall ? parts_.coupling->midline() : parts_.coupling->outline());
-  if (plate_wall) f.set_plate_outline(parts_.coupling->plate_outline());
+  if (plate_wall)
+    f.set_plate_outline(parts_.coupling->plate_outline());  // with its mid-line as the barrier
+  else
+    f.set_barriers(parts_.coupling->outline());
   // Diagnostic: one line per step on stderr (contact and plate-wall forces on the plate's side), for the noise
   // figures of docs/coupling.md.
   static const bool trace = std::getenv("HALFETI_TRACE_COUPLING") != nullptr;

@@ -43,26 +43,6 @@ ContactCoupling::ContactCoupling(MPI_Comm world, structure::PlateSolver* solver,
   }
 }
 
-std::vector<sph::Barrier> ContactCoupling::midline() const {
-  // The first corner: where the surface turns by more than 45 degrees (the right face's top).
-  const auto& p = surface_.points;
-  const int n = static_cast<int>(p.size());
-  int corner = n / 2;
-  for (int k = 1; k + 1 < n; ++k) {
-    const Eigen::Vector2d a = (p[k] - p[k - 1]).normalized(), b = (p[k + 1] - p[k]).normalized();
-    if (a.dot(b) < std::sqrt(0.5)) {
-      corner = k;
-      break;
-    }
-  }
-  std::vector<sph::Barrier> out;
-  for (int k = 0; k < corner && k + 1 <= n - 1 - (k + 1); ++k) {
-    const Eigen::Vector2d a = 0.5 * (p[k] + p[n - 1 - k]), b = 0.5 * (p[k + 1] + p[n - 2 - k]);
-    out.push_back({a.x(), a.y(), b.x(), b.y()});
-  }
-  return out;
-}
-
 sph::PlateOutline ContactCoupling::plate_outline() const {
   sph::PlateOutline o;
   for (std::size_t k = 0; k < surface_.points.size(); ++k) {

@@ -75,6 +75,7 @@ void Fluid::set_barriers(const std::vector<Barrier>& extra) {
 
 void Fluid::set_plate_outline(const PlateOutline& outline) {
   plate_wall_.set_outline(outline, dx_, kernel_.support());
+  set_barriers(plate_wall_.midline());
 }
 
 bool Fluid::near_internal_wall(double px, double py) const {

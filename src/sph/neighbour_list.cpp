@@ -30,16 +30,6 @@ void bin(const parallel::CellGrid& g, const double* x, const double* y, int n, K
   }
 }
 
-// Proper crossing of segments p1p2 and q1q2 (orientation test).
-bool segments_cross(double p1x, double p1y, double p2x, double p2y, double q1x, double q1y, double q2x,
-                    double q2y) {
-  auto orient = [](double ax, double ay, double bx, double by, double cx, double cy) {
-    return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
-  };
-  const double d1 = orient(q1x, q1y, q2x, q2y, p1x, p1y), d2 = orient(q1x, q1y, q2x, q2y, p2x, p2y);
-  const double d3 = orient(p1x, p1y, p2x, p2y, q1x, q1y), d4 = orient(p1x, p1y, p2x, p2y, q2x, q2y);
-  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0));
-}
 }  // namespace
 
 void NeighbourSearch::set_fixed_points(int set, const std::vector<double>& px, const std::vector<double>& py,

@@ -1,63 +1,202 @@
-// The plate's surface as a moving wall in the SPH sums (docs/coupling.md, "The plate in the SPH sums").
+// The plate's surface as a moving wall in the SPH sums (docs/coupling.md, section 12, "The plate in the SPH sums").
 #include "halfeti/sph/plate_wall.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "halfeti/core/error.hpp"
+#include "halfeti/sph/neighbour_list.hpp"
+
 namespace halfeti::sph {
 
-void PlateWall::set_outline(const PlateOutline& o, double dx, double support) {
-  outline_ = o;
-  support_ = support;
-  gx_.clear(); gy_.clear(); gvol_.clear(); gnx_.clear(); gny_.clear(); geta_.clear();
-  gseg_.clear(); face_of_segment_.clear(); ghost_face_.clear();
-  const int ns = static_cast<int>(o.size()) - 1;
-  if (ns < 1) return;
-  // Faces: runs of segments without a corner (a turn of more than 45 degrees starts a new face).
-  int face = 0;
-  double tx0 = 0.0, ty0 = 0.0;
-  for (int s = 0; s < ns; ++s) {
-    const double dxs = o.x[s + 1] - o.x[s], dys = o.y[s + 1] - o.y[s], l = std::hypot(dxs, dys);
-    const double tx = dxs / l, ty = dys / l;
-    if (s > 0 && tx * tx0 + ty * ty0 < std::sqrt(0.5)) ++face;
-    face_of_segment_.push_back(face);
-    tx0 = tx;
-    ty0 = ty;
+namespace {
+// Index of the first point (from the start, or from the end when backwards) where the polyline turns by more
+// than 45 degrees: the top corners of the plate's outline.
+int corner(const PlateOutline& o, bool backwards) {
+  const int n = static_cast<int>(o.size());
+  for (int step = 1; step + 1 < n; ++step) {
+    const int k = backwards ? n - 1 - step : step;
+    const int a = backwards ? k + 1 : k - 1, b = backwards ? k - 1 : k + 1;
+    const double ax = o.x[k] - o.x[a], ay = o.y[k] - o.y[a], bx = o.x[b] - o.x[k], by = o.y[b] - o.y[k];
+    if (ax * bx + ay * by < std::sqrt(0.5) * std::hypot(ax, ay) * std::hypot(bx, by)) return k;
   }
-  // Rows at (m + 1/2) dx behind the face, as the tank walls' ghosts; points every dx/2 along it.
-  const int rows = static_cast<int>(std::ceil(support / dx - 0.5)) + 1;
-  for (int s = 0; s < ns; ++s) {
-    const double dxs = o.x[s + 1] - o.x[s], dys = o.y[s + 1] - o.y[s], l = std::hypot(dxs, dys);
-    const double tx = dxs / l, ty = dys / l, nx = ty, ny = -tx;  // outward normal: tangent turned clockwise
-    const int nsub = std::max(1, static_cast<int>(std::lround(l / (0.5 * dx))));
-    for (int k = 0; k < nsub; ++k) {
-      const double eta = (k + 0.5) / nsub;
-      for (int m = 0; m < rows; ++m) {
-        gx_.push_back(o.x[s] + eta * dxs - (m + 0.5) * dx * nx);
-        gy_.push_back(o.y[s] + eta * dys - (m + 0.5) * dx * ny);
-        gvol_.push_back(l / nsub * dx);
-        gnx_.push_back(nx);
-        gny_.push_back(ny);
-        geta_.push_back(eta);
-        gseg_.push_back(s);
-        ghost_face_.push_back(face_of_segment_[s]);
-      }
+  return -1;
+}
+}  // namespace
+
+void PlateWall::offset_outline(const PlateOutline& o, double dx) {
+  const int n = static_cast<int>(o.size());
+  point_.resize(n);
+  for (int k = 0; k < n; ++k) point_[k] = k;
+  outline_ = o;
+  const int c1 = corner(o, false), c2 = corner(o, true);
+  if (c1 <= 0 || c2 <= c1 || (offsets_.right == 0.0 && offsets_.left == 0.0 && offsets_.top == 0.0)) return;
+  // Outward unit normal of segment s (the tangent turned clockwise).
+  auto normal = [&](int s, double& nx, double& ny) {
+    const double tx = o.x[s + 1] - o.x[s], ty = o.y[s + 1] - o.y[s], l = std::hypot(tx, ty);
+    nx = ty / l;
+    ny = -tx / l;
+  };
+  // A face point's normal: the mean of its face's segments beside it.
+  auto face_normal = [&](int k, int first_seg, int last_seg, double& nx, double& ny) {
+    nx = ny = 0.0;
+    for (int s : {k - 1, k}) {
+      if (s < first_seg || s > last_seg) continue;
+      double sx, sy;
+      normal(s, sx, sy);
+      nx += sx;
+      ny += sy;
+    }
+    const double l = std::hypot(nx, ny);
+    nx /= l;
+    ny /= l;
+  };
+  // The plate's axis at the top: the mean upward tangent of the two faces' last segments.
+  double ax = (o.x[c1] - o.x[c1 - 1]) + (o.x[c2] - o.x[c2 + 1]), ay = (o.y[c1] - o.y[c1 - 1]) + (o.y[c2] - o.y[c2 + 1]);
+  const double al = std::hypot(ax, ay);
+  ax /= al;
+  ay /= al;
+  double nrx, nry, nlx, nly;
+  face_normal(c1, 0, c1 - 1, nrx, nry);
+  face_normal(c2, c2, n - 2, nlx, nly);
+  for (int k = 0; k < n; ++k) {
+    double mx, my;
+    if (k < c1) {
+      face_normal(k, 0, c1 - 1, mx, my);
+      mx *= offsets_.right;
+      my *= offsets_.right;
+    } else if (k > c2) {
+      face_normal(k, c2, n - 2, mx, my);
+      mx *= offsets_.left;
+      my *= offsets_.left;
+    } else {  // the top and its corners: up the axis, and sideways as the faces beside
+      const double s = static_cast<double>(k - c1) / (c2 - c1);
+      mx = offsets_.top * ax + (1.0 - s) * offsets_.right * nrx + s * offsets_.left * nlx;
+      my = offsets_.top * ay + (1.0 - s) * offsets_.right * nry + s * offsets_.left * nly;
+    }
+    outline_.x[k] = o.x[k] + mx;
+    outline_.y[k] = o.y[k] + my;
+  }
+  // A lowered top passes face points below the old corner: drop those left less than dx/20 below the new one
+  // (as many on both faces, so that they keep pairing up).
+  auto height = [&](int k) { return ax * outline_.x[k] + ay * outline_.y[k]; };
+  int m = 0;
+  while (m + 2 < c1 && (height(c1) - height(c1 - 1 - m) < 0.05 * dx || height(c2) - height(c2 + 1 + m) < 0.05 * dx))
+    ++m;
+  if (m == 0) return;
+  PlateOutline cut;
+  point_.clear();
+  for (int k = 0; k < n; ++k) {
+    if ((k >= c1 - m && k < c1) || (k > c2 && k <= c2 + m)) continue;
+    for (auto [to, from] : {std::pair{&cut.x, &outline_.x}, {&cut.y, &outline_.y}, {&cut.vx, &outline_.vx},
+                            {&cut.vy, &outline_.vy}, {&cut.ax, &outline_.ax}, {&cut.ay, &outline_.ay}})
+      to->push_back((*from)[k]);
+    point_.push_back(k);
+  }
+  outline_ = std::move(cut);
+}
+
+std::vector<Barrier> PlateWall::midline() const {
+  std::vector<Barrier> out;
+  for (int q = 0; q < fibres_; ++q) out.push_back({mid_x_[q], mid_y_[q], mid_x_[q + 1], mid_y_[q + 1]});
+  return out;
+}
+
+void PlateWall::set_outline(const PlateOutline& true_outline, double dx, double support) {
+  offset_outline(true_outline, dx);
+  const PlateOutline& o = outline_;
+  support_ = support;
+  gx_.clear(); gy_.clear(); gvol_.clear(); gregion_.clear(); gfibre_.clear(); row_start_.clear();
+  mid_x_.clear(); mid_y_.clear();
+  fibres_ = 0;
+  const int n = static_cast<int>(o.size());
+  if (n < 2) return;
+  right_end_ = corner(o, false);
+  left_start_ = corner(o, true);
+  HALFETI_CHECK(right_end_ > 0 && left_start_ > right_end_ && right_end_ == n - 1 - left_start_,
+                "the plate's outline must run up one face, across the top and down the other with as many points "
+                "on each face (corners at " << right_end_ << " and " << left_start_ << " of " << n << ")");
+  fibres_ = right_end_;
+  for (int k = 0; k <= fibres_; ++k) {  // the mid-line, as ContactCoupling::midline()
+    mid_x_.push_back(0.5 * (o.x[k] + o.x[n - 1 - k]));
+    mid_y_.push_back(0.5 * (o.y[k] + o.y[n - 1 - k]));
+  }
+  // Arc length of every face point from its top corner, down each face.
+  arc_.assign(n, 0.0);
+  for (int k = right_end_ - 1; k >= 0; --k) arc_[k] = arc_[k + 1] + std::hypot(o.x[k + 1] - o.x[k], o.y[k + 1] - o.y[k]);
+  for (int k = left_start_ + 1; k < n; ++k) arc_[k] = arc_[k - 1] + std::hypot(o.x[k] - o.x[k - 1], o.y[k] - o.y[k - 1]);
+  double shortest = std::numeric_limits<double>::max();
+  for (int k = 0; k < right_end_; ++k) shortest = std::min(shortest, arc_[k] - arc_[k + 1]);
+  for (int k = left_start_; k + 1 < n; ++k) shortest = std::min(shortest, arc_[k + 1] - arc_[k]);
+  // The point at arc length s down a face: its position, the outward normal and the right face's segment there.
+  auto at = [&](bool right, double s, double& px, double& py, double& nx, double& ny, int& seg) {
+    int k = right ? right_end_ - 1 : left_start_;  // segment k: points k, k + 1 of the outline
+    if (right)
+      while (k > 0 && arc_[k] < s) --k;
+    else
+      while (k + 2 < n && arc_[k + 1] < s) ++k;
+    const double x0 = o.x[k], y0 = o.y[k], x1 = o.x[k + 1], y1 = o.y[k + 1], l = std::hypot(x1 - x0, y1 - y0);
+    const double e = right ? (arc_[k] - s) / l : (s - arc_[k]) / l;  // along the outline's direction
+    px = x0 + e * (x1 - x0);
+    py = y0 + e * (y1 - y0);
+    nx = (y1 - y0) / l;  // outward: the outline's tangent turned clockwise
+    ny = -(x1 - x0) / l;
+    seg = right ? k : n - 2 - k;
+  };
+  // Rows every dx down the plate from the top corners, (j + 1/2) dx below them, as the water lattice's rows: body
+  // ghosts across the thickness and band ghosts (m + 1/2) dx beyond each face, each standing for one lattice cell.
+  const int bands = static_cast<int>(std::ceil(support / dx - 0.5)) + 1;
+  const double length = std::min(arc_[0], arc_[n - 1]);
+  for (int j = 0; (j + 0.5) * dx < length; ++j) {
+    row_start_.push_back(static_cast<int>(gx_.size()));
+    const double s = (j + 0.5) * dx;
+    double rx, ry, nrx, nry, lx, ly, nlx, nly;
+    int seg, unused;
+    at(true, s, rx, ry, nrx, nry, seg);
+    at(false, s, lx, ly, nlx, nly, unused);
+    auto add = [&](double gx, double gy, double vol, Region region) {
+      gx_.push_back(gx);
+      gy_.push_back(gy);
+      gvol_.push_back(vol);
+      gregion_.push_back(region);
+      gfibre_.push_back(seg);
+    };
+    const double width = std::hypot(rx - lx, ry - ly);
+    const int nb = std::max(1, static_cast<int>(std::lround(width / dx)));
+    for (int m = 0; m < nb; ++m) {  // the solid, across its thickness
+      const double f = (m + 0.5) / nb;
+      add(lx + f * (rx - lx), ly + f * (ry - ly), width / nb * dx, kBody);
+    }
+    for (int m = 0; m < bands; ++m) {  // the water lattice continued beyond each face
+      add(rx + (m + 0.5) * dx * nrx, ry + (m + 0.5) * dx * nry, dx * dx, kRightBand);
+      add(lx + (m + 0.5) * dx * nlx, ly + (m + 0.5) * dx * nly, dx * dx, kLeftBand);
     }
   }
+  row_start_.push_back(static_cast<int>(gx_.size()));
+  dx_ = dx;
+  row_window_ = static_cast<int>(std::ceil(support / dx)) + 1;
+  // Segments a particle's support can reach on either side of its own (segments are at least `shortest` long).
+  fibre_window_ = static_cast<int>(std::ceil(support / shortest)) + 2;
+}
+
+bool PlateWall::hidden(double xi, double yi, double xg, double yg, int fibre) const {
+  // The mid-line segments near the ghost's fibre (a segment between points within the support cannot reach
+  // further along the plate than the fibre window).
+  const int lo = std::max(0, fibre - fibre_window_), hi = std::min(fibres_, fibre + fibre_window_);
+  for (int q = lo; q < hi; ++q)
+    if (segments_cross(xi, yi, xg, yg, mid_x_[q], mid_y_[q], mid_x_[q + 1], mid_y_[q + 1])) return true;
+  return false;
 }
 
 void PlateWall::find_pairs(const double* x, const double* y, int n, const Kernel& kernel) {
   particle_.clear(); start_.clear(); ghost_.clear(); ex_.clear(); ey_.clear(); f_.clear();
+  nx_.clear(); ny_.clear(); eta_.clear(); seg_.clear();
   start_.push_back(0);
   if (empty()) return;
   const auto& o = outline_;
   const int ns = static_cast<int>(o.size()) - 1;
   double x0 = o.x[0], x1 = o.x[0], y0 = o.y[0], y1 = o.y[0];
-  for (std::size_t k = 0; k < gx_.size(); ++k) {
-    x0 = std::min(x0, gx_[k]); x1 = std::max(x1, gx_[k]);
-    y0 = std::min(y0, gy_[k]); y1 = std::max(y1, gy_[k]);
-  }
   for (std::size_t k = 0; k < o.size(); ++k) {
     x0 = std::min(x0, o.x[k]); x1 = std::max(x1, o.x[k]);
     y0 = std::min(y0, o.y[k]); y1 = std::max(y1, o.y[k]);
@@ -67,10 +206,10 @@ void PlateWall::find_pairs(const double* x, const double* y, int n, const Kernel
   for (int i = 0; i < n; ++i) {
     const double xi = x[i], yi = y[i];
     if (xi < x0 - r || xi > x1 + r || yi < y0 - r || yi > y1 + r) continue;
-    // Closest segment (eq. 20's projection, clamped for the distance); at a convex corner the tie goes to the
-    // face the particle stands more clearly in front of (as the contact search).
+    // Closest point of the outline (eq. 20's projection, clamped); at a convex corner the tie goes to the face
+    // the particle stands more clearly in front of (as the contact search).
     int best = -1;
-    double best_d = std::numeric_limits<double>::max(), best_g = 0.0;
+    double best_d = std::numeric_limits<double>::max(), best_g = 0.0, best_eta = 0.0;
     for (int s = 0; s < ns; ++s) {
       const double dxs = o.x[s + 1] - o.x[s], dys = o.y[s + 1] - o.y[s], l2 = dxs * dxs + dys * dys;
       const double rx = xi - o.x[s], ry = yi - o.y[s];
@@ -81,20 +220,29 @@ void PlateWall::find_pairs(const double* x, const double* y, int n, const Kernel
         best = s;
         best_d = d;
         best_g = g;
+        best_eta = eta;
       }
     }
+    // Particles inside the plate (or on its surface) are the contact's (eqs. 19-23), not the wall's.
     if (best < 0 || best_d >= r || best_g <= 0.0) continue;
-    const int face = face_of_segment_[best];
+    // The wall normal at the particle: from its closest point to it (a face's normal in front of a face, radial
+    // round a corner, so that it turns continuously).
+    const double cx = o.x[best] + best_eta * (o.x[best + 1] - o.x[best]);
+    const double cy = o.y[best] + best_eta * (o.y[best + 1] - o.y[best]);
+    // The particle's row: the arc length of its closest point below the top corners (0 on the top).
+    const double l = std::hypot(o.x[best + 1] - o.x[best], o.y[best + 1] - o.y[best]);
+    const double arc = best < right_end_ ? arc_[best] - best_eta * l : best >= left_start_ ? arc_[best] + best_eta * l : 0.0;
+    const int row = static_cast<int>(arc / dx_), rows = static_cast<int>(row_start_.size()) - 1;
     const std::size_t before = ghost_.size();
-    for (std::size_t g = 0; g < gx_.size(); ++g) {
-      if (ghost_face_[g] != face) continue;
+    const int lo = std::clamp(row - row_window_, 0, rows), hi = std::clamp(row + row_window_ + 1, 0, rows);
+    for (int g = row_start_[lo]; g < row_start_[hi]; ++g) {
       const double ex = gx_[g] - xi, ey = gy_[g] - yi, rr2 = ex * ex + ey * ey;
       if (rr2 >= r2max || rr2 == 0.0) continue;
-      const int s = gseg_[g];
-      if (gnx_[g] * (xi - o.x[s]) + gny_[g] * (yi - o.y[s]) <= 0.0) continue;  // behind this segment's line
+      // Band ghosts stand for water only where the plate hides the real water (the mid-line barrier's rule).
+      if (gregion_[g] != kBody && !hidden(xi, yi, gx_[g], gy_[g], gfibre_[g])) continue;
       double w, f;
       ke(std::sqrt(rr2), w, f);
-      ghost_.push_back(static_cast<int>(g));
+      ghost_.push_back(g);
       ex_.push_back(ex);
       ey_.push_back(ey);
       f_.push_back(f);
@@ -102,6 +250,10 @@ void PlateWall::find_pairs(const double* x, const double* y, int n, const Kernel
     if (ghost_.size() == before) continue;
     particle_.push_back(i);
     start_.push_back(static_cast<int>(ghost_.size()));
+    nx_.push_back((xi - cx) / best_d);
+    ny_.push_back((yi - cy) / best_d);
+    seg_.push_back(best);
+    eta_.push_back(best_eta);
   }
 }
 
@@ -111,61 +263,49 @@ void PlateWall::momentum(const double* vx, const double* vy, const double* rho, 
   loads_.clear();
   const double viscosity = k.alpha * k.h * k.c0 * k.rho0;  // eq. 4
   const double eta2 = 0.01 * k.h * k.h;
-  std::vector<double> lx(outline_.size()), ly(outline_.size());
-  std::vector<int> hit;
   for (std::size_t a = 0; a < particle_.size(); ++a) {
-    const int i = particle_[a];
-    const double rhoi = rho[i], pi = p[i], inv_rhoi = 1.0 / rhoi;
+    const int i = particle_[a], s = seg_[a];
+    const double rhoi = rho[i], pi = p[i], inv_rhoi = 1.0 / rhoi, nx = nx_[a], ny = ny_[a], eta = eta_[a];
+    // eq. 8 with the ghosts' velocity mirrored about the wall at the particle's closest point:
+    // u_g - u_i = -2 ((u_i - u_w).n) n
+    const double uwx = (1.0 - eta) * outline_.vx[s] + eta * outline_.vx[s + 1];
+    const double uwy = (1.0 - eta) * outline_.vy[s] + eta * outline_.vy[s + 1];
+    const double un = (vx[i] - uwx) * nx + (vy[i] - uwy) * ny;
     double sx = 0.0, sy = 0.0;
-    hit.clear();
     for (int q = start_[a]; q < start_[a + 1]; ++q) {
-      const int g = ghost_[q], s = gseg_[g];
-      const double ex = ex_[q], ey = ey_[q], f = f_[q], eta = geta_[g];
+      const int g = ghost_[q];
+      const double ex = ex_[q], ey = ey_[q], f = f_[q];
       // Adami et al. (2012): pressure continued from the particle with the body force
       const double pg = pi + rhoi * (k.body_x * ex + k.body_y * ey);
       const double psum = k.clamp ? std::max(pi + pg, 0.0) : pi + pg;
       // eq. 4 pressure term: -(1/rho_i) (p_i + p_g) V_g grad_i W, grad_i W = -F e
       double scalar = psum * gvol_[g] * f * inv_rhoi;
-      // eq. 8 with the ghost's velocity mirrored about the moving face: u_g - u_i = -2 ((u_i - u_w).n) n
-      const double uwx = (1.0 - eta) * outline_.vx[s] + eta * outline_.vx[s + 1];
-      const double uwy = (1.0 - eta) * outline_.vy[s] + eta * outline_.vy[s + 1];
-      const double un = (vx[i] - uwx) * gnx_[g] + (vy[i] - uwy) * gny_[g];
-      const double du_dot_e = -2.0 * un * (gnx_[g] * ex + gny_[g] * ey);
+      const double du_dot_e = -2.0 * un * (nx * ex + ny * ey);
       scalar -= viscosity * du_dot_e / (ex * ex + ey * ey + eta2) * gvol_[g] * f * inv_rhoi;
-      const double gx = scalar * ex, gy = scalar * ey;
-      sx += gx;
-      sy += gy;
-      // the plate gets the opposite force, shared by the segment's points as a contact force (eq. 19's (1-eta), eta)
-      if (lx[s] == 0.0 && ly[s] == 0.0) hit.push_back(s);
-      if (lx[s + 1] == 0.0 && ly[s + 1] == 0.0) hit.push_back(s + 1);
-      lx[s] -= (1.0 - eta) * mass[i] * gx;
-      ly[s] -= (1.0 - eta) * mass[i] * gy;
-      lx[s + 1] -= eta * mass[i] * gx;
-      ly[s + 1] -= eta * mass[i] * gy;
+      sx += scalar * ex;
+      sy += scalar * ey;
     }
     ax[i] += sx;
     ay[i] += sy;
-    std::sort(hit.begin(), hit.end());
-    hit.erase(std::unique(hit.begin(), hit.end()), hit.end());
-    for (int pt : hit) {
-      if (lx[pt] != 0.0 || ly[pt] != 0.0) loads_.push_back({gid[i], pt, lx[pt], ly[pt]});
-      lx[pt] = ly[pt] = 0.0;
-    }
+    // The plate gets the opposite force at the particle's closest point, shared by the segment's two points as a
+    // contact force (eq. 19's (1 - eta), eta).
+    const double fx = -mass[i] * sx, fy = -mass[i] * sy;
+    loads_.push_back({gid[i], point_[s], (1.0 - eta) * fx, (1.0 - eta) * fy});
+    loads_.push_back({gid[i], point_[s + 1], eta * fx, eta * fy});
   }
 }
 
 void PlateWall::continuity(const double* vx, const double* vy, const double* rho, double* drho) const {
   for (std::size_t a = 0; a < particle_.size(); ++a) {
-    const int i = particle_[a];
+    const int i = particle_[a], s = seg_[a];
+    const double nx = nx_[a], ny = ny_[a], eta = eta_[a];
+    const double uwx = (1.0 - eta) * outline_.vx[s] + eta * outline_.vx[s + 1];
+    const double uwy = (1.0 - eta) * outline_.vy[s] + eta * outline_.vy[s + 1];
+    const double un = (vx[i] - uwx) * nx + (vy[i] - uwy) * ny;
     double d = 0.0;
     for (int q = start_[a]; q < start_[a + 1]; ++q) {
-      const int g = ghost_[q], s = gseg_[g];
-      const double eta = geta_[g];
-      const double uwx = (1.0 - eta) * outline_.vx[s] + eta * outline_.vx[s + 1];
-      const double uwy = (1.0 - eta) * outline_.vy[s] + eta * outline_.vy[s + 1];
-      const double un = (vx[i] - uwx) * gnx_[g] + (vy[i] - uwy) * gny_[g];
-      const double n_dot_grad = -f_[q] * (gnx_[g] * ex_[q] + gny_[g] * ey_[q]);
-      d += 2.0 * rho[i] * gvol_[g] * un * n_dot_grad;  // eq. 3 first term over the ghosts
+      const double n_dot_grad = -f_[q] * (nx * ex_[q] + ny * ey_[q]);
+      d += 2.0 * rho[i] * gvol_[ghost_[q]] * un * n_dot_grad;  // eq. 3 first term over the ghosts
     }
     drho[i] += d;
   }

@@ -37,6 +37,7 @@ struct Parts {
   bool structure_rank = false;
 
   std::optional<coupling::CouplingParameters> coupling_params;  // the scene has water and a plate
+  sph::LatticeOffsets plate_offsets;  // how the water's initial lattice sees the plate's faces
   std::unique_ptr<coupling::ContactCoupling> coupling;           // on every rank (collective)
   coupling::Corrections corrections;                             // this rank's, reused every step
 

@@ -89,9 +89,6 @@ class ContactCoupling {
   // The plate's current outer surface as segments, on every rank (for Fluid::set_barriers: no SPH interaction
   // across the plate).
   std::vector<sph::Barrier> outline() const;
-  // The plate's mid-line (the mean of the two faces' points, base to top), on every rank: the barrier that keeps
-  // the two sides apart without cutting the pairs that pass round the top corners (docs/coupling.md, section 12).
-  std::vector<sph::Barrier> midline() const;
   // The same surface with its points' velocities and accelerations (for Fluid::set_plate_outline).
   sph::PlateOutline plate_outline() const;
   // Collective. The fluid's plate-wall loads of this rank (Fluid::plate_wall_loads()), applied to the plate over

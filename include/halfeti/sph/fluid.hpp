@@ -74,8 +74,11 @@ class Fluid {
   // Fluid pairs whose segment crosses one of these lines do not interact (added to the internal walls).
   void set_barriers(const std::vector<Barrier>& extra);
   // The plate's surface as a moving wall in the SPH sums (plate_wall.hpp), from the next compute_forces() on;
-  // an empty outline turns it off. The loads of the last compute_forces() on the surface points, per particle.
+  // an empty outline turns it off. Its mid-line (as the lattice sees the plate) becomes the barrier, in place of
+  // any earlier extra barriers. The loads of the last compute_forces() on the surface points, per particle.
   void set_plate_outline(const PlateOutline& outline);
+  // How the initial lattice sees the plate's faces (before the first set_plate_outline()).
+  void set_plate_offsets(const LatticeOffsets& offsets) { plate_wall_.set_offsets(offsets); }
   const std::vector<PlateWallLoad>& plate_wall_loads() const { return plate_wall_.loads(); }
 
   // Probes: collective, same value on every rank, bitwise independent of the rank count.

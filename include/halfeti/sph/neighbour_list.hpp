@@ -18,6 +18,17 @@ struct Barrier {
   double xa, ya, xb, yb;
 };
 
+// Whether segment p1-p2 properly crosses segment q1-q2 (touching at an end point does not count).
+inline bool segments_cross(double p1x, double p1y, double p2x, double p2y, double q1x, double q1y, double q2x,
+                           double q2y) {
+  auto orient = [](double ax, double ay, double bx, double by, double cx, double cy) {
+    return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+  };
+  const double d1 = orient(q1x, q1y, q2x, q2y, p1x, p1y), d2 = orient(q1x, q1y, q2x, q2y, p2x, p2y);
+  const double d3 = orient(p1x, p1y, p2x, p2y, q1x, q1y), d4 = orient(p1x, p1y, p2x, p2y, q2x, q2y);
+  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0));
+}
+
 // The segments of a polyline given by its points (x0, y0, x1, y1, ...), e.g. the structure's surface.
 inline std::vector<Barrier> barriers_from_polyline(const std::vector<double>& xy) {
   std::vector<Barrier> out;

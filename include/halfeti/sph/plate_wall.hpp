@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "halfeti/sph/kernel.hpp"
+#include "halfeti/sph/neighbour_list.hpp"
 
 namespace halfeti::sph {
 
@@ -27,37 +28,77 @@ struct PlateWallLoad {
   double fx, fy;
 };
 
+// How far the water lattice's image of the plate lies outside the plate's true faces (m, outward positive; the
+// simulation computes them from the initial lattice: docs/coupling.md, "The plate as the lattice sees it").
+struct LatticeOffsets {
+  double right = 0.0, left = 0.0, top = 0.0;
+};
+
 struct PlateWallConstants {
   double dx = 0.0, h = 0.0, rho0 = 0.0, c0 = 0.0, alpha = 0.0;
   double body_x = 0.0, body_y = 0.0;
   bool clamp = true;  // a wall pushes, never pulls (as the tank walls)
 };
 
+// Ghost lattice (docs/coupling.md, section 12): the plate (its outline runs up the right face, across the top and
+// down the left face) is cut into rows one lattice spacing apart, measured down both faces from the top corners. Each
+// row holds body ghosts filling the plate's thickness and band ghosts continuing the water's lattice (m + 1/2) dx
+// beyond each face. A particle uses every body ghost in its support and
+// a band ghost only when the plate hides it (the segment between them crosses the plate's mid-line): the ghosts
+// then stand exactly for the solid and for the water the mid-line barrier takes out of the support, on a face, on
+// the top and round a corner alike.
 class PlateWall {
  public:
+  // The offsets apply to every outline set after this call.
+  void set_offsets(const LatticeOffsets& offsets) { offsets_ = offsets; }
   void set_outline(const PlateOutline& outline, double dx, double support);
   bool empty() const { return outline_.size() < 2; }
-  // Ghost pairs of the owned particles [0, n) (positions x, y); the face a particle sees is the one of its
-  // closest segment, and only its ghosts in front of which the particle stands.
+  // The mid-line of the plate as the lattice sees it, base to top: the barrier between the two sides.
+  std::vector<Barrier> midline() const;
+  // The outline as the lattice sees it (offset faces), and for each of its points the true outline's point.
+  const PlateOutline& outline() const { return outline_; }
+  // Ghost pairs of the owned particles [0, n) (positions x, y).
   void find_pairs(const double* x, const double* y, int n, const Kernel& kernel);
   // eq. 4 pressure and viscous terms over the ghosts: adds to ax, ay (per owned particle) and records the loads.
   void momentum(const double* vx, const double* vy, const double* rho, const double* p, const double* mass,
                 const std::int64_t* gid, const PlateWallConstants& k, double* ax, double* ay);
-  // eq. 3 first term over the ghosts (velocity mirrored about the moving face): adds to drho.
+  // eq. 3 first term over the ghosts (velocity mirrored about the wall): adds to drho.
   void continuity(const double* vx, const double* vy, const double* rho, double* drho) const;
   const std::vector<PlateWallLoad>& loads() const { return loads_; }
   std::size_t ghost_count() const { return gx_.size(); }
 
+  // Inspection (tests): the particles with ghosts after find_pairs, and each one's ghosts.
+  const std::vector<int>& particles() const { return particle_; }
+  std::vector<int> ghosts_of(std::size_t a) const {
+    return {ghost_.begin() + start_[a], ghost_.begin() + start_[a + 1]};
+  }
+  double ghost_x(int g) const { return gx_[g]; }
+  double ghost_y(int g) const { return gy_[g]; }
+  double ghost_volume(int g) const { return gvol_[g]; }
+
  private:
+  enum Region : int { kBody = 0, kRightBand = 1, kLeftBand = 2 };
   PlateOutline outline_;
+  std::vector<int> point_;  // outline_ point -> the true outline's point (where loads go)
+  LatticeOffsets offsets_;
   double support_ = 0.0;
-  // Ghosts: position, volume, normal, the segment and its parameter (for the load and the wall's motion).
-  std::vector<double> gx_, gy_, gvol_, gnx_, gny_, geta_;
-  std::vector<int> gseg_, face_of_segment_, ghost_face_;
-  // Per particle with ghosts: its index and its pairs [start, start+count).
-  std::vector<int> particle_, start_, ghost_;
-  std::vector<double> ex_, ey_, f_;
+  int right_end_ = 0, left_start_ = 0;  // outline points [0, right_end_] up the right face, [left_start_, n) down the left
+  int fibres_ = 0, fibre_window_ = 0, row_window_ = 0;
+  double dx_ = 0.0;
+  std::vector<double> mid_x_, mid_y_;    // mid-line points, base to top (fibres_ + 1)
+  std::vector<double> arc_;              // per outline point: arc length from its face's top corner (0 on the top)
+  // Ghosts, in rows of one lattice spacing from the top down: position, volume, region, the right face's segment
+  // beside it; row_start_ indexes the rows.
+  std::vector<double> gx_, gy_, gvol_;
+  std::vector<int> gregion_, gfibre_, row_start_;
+  // Per particle with ghosts: its index, its pairs [start, start+count), its wall normal, closest segment and
+  // the parameter of its closest point on it (where the load goes).
+  std::vector<int> particle_, start_, ghost_, seg_;
+  std::vector<double> ex_, ey_, f_, nx_, ny_, eta_;
   std::vector<PlateWallLoad> loads_;
+
+  bool hidden(double xi, double yi, double xg, double yg, int fibre) const;
+  void offset_outline(const PlateOutline& o, double dx);
 };
 
 }  // namespace halfeti::sph
