@@ -32,6 +32,17 @@ const Registry<structure::PlaneHypothesis>& hypothesis_registry() {
   return r;
 }
 
+const Registry<structure::ElementType>& element_registry() {
+  static const auto r = named_values<structure::ElementType>({
+      {"q9", "nine-node quadrilateral, selective reduced integration (default)", structure::ElementType::kQ9},
+      {"q4_eas",
+       "four-node quadrilateral with 4 enhanced strain modes (Simo & Armero 1992), condensed per element; "
+       "needs an even cells_across",
+       structure::ElementType::kQ4Eas},
+  });
+  return r;
+}
+
 std::shared_ptr<Schema> load_schema() {
   auto s = std::make_shared<Schema>("A dead point load on a named node (tests and static cases).");
   s->add(Key::string("node", "named node: top_left, top_centre, top_right, base_left, ...").required());
@@ -44,12 +55,14 @@ std::shared_ptr<Schema> load_schema() {
 std::shared_ptr<const Schema> structure_schema() {
   static const std::shared_ptr<const Schema> schema = [] {
     auto s = std::make_shared<Schema>(
-        "The rubber plate: a 2D large-deformation solid of Q9 elements, clamped at its base, per unit depth.");
+        "The rubber plate: a 2D large-deformation solid of Q9 (or Q4 enhanced-strain) elements, clamped at its "
+        "base, per unit depth.");
     s->add(Key::point("base", "centre of the clamped base", "m").required());
     s->add(Key::real("height", "plate height", "m").def(0.08).positive().at_most(100.0));
     s->add(Key::real("thickness", "plate thickness", "m").def(0.003).positive().at_most(100.0));
-    s->add(Key::integer("cells_across", "Q9 cells through the thickness").def(2).in(1, 64));
-    s->add(Key::integer("cells_along", "Q9 cells along the height (2 x 60 is the paper's 120)").def(60).in(1, 4096));
+    s->add(Key::integer("cells_across", "cells (elements) through the thickness").def(2).in(1, 64));
+    s->add(Key::integer("cells_along", "cells (elements) along the height (2 x 60 is the paper's 120)").def(60).in(1, 4096));
+    s->add(Key::choice("element", "finite element of the plate", element_registry().names()).def("q9"));
     s->add(Key::choice("material", "hyperelastic law", material_registry().names()).def("neo_hookean"));
     s->add(Key::real("youngs_modulus", "E", "Pa").def(10e6).positive());
     s->add(Key::real("poisson_ratio", "nu (rubber 0.45-0.49)").def(0.45).above(-1.0).below(0.5));
@@ -108,6 +121,7 @@ StructureSetup structure_setup(const scene::Node& root) {
   p.geometry.thickness = s.real("thickness");
   p.geometry.cells_across = static_cast<int>(s.integer("cells_across"));
   p.geometry.cells_along = static_cast<int>(s.integer("cells_along"));
+  p.geometry.element = element_registry().get(s.string("element")).make;
   p.material.model = material_registry().get(s.string("material")).make;
   p.material.youngs_modulus = s.real("youngs_modulus");
   p.material.poisson_ratio = s.real("poisson_ratio");
@@ -127,6 +141,10 @@ StructureSetup structure_setup(const scene::Node& root) {
                                   << p.geometry.thickness << " x " << p.geometry.height
                                   << " m) does not fit in the tank");
   }
+  if (p.geometry.element == structure::ElementType::kQ4Eas && p.geometry.cells_across % 2 != 0)
+    HALFETI_USER_ERROR(s.key_path("cells_across") << ": " << p.geometry.cells_across
+                                                  << " must be even with element: q4_eas (the top and base centres "
+                                                  << "must be nodes)");
   if (s.has("time_step")) out.time_step = s.real("time_step");
   if (!root.has("fluid") && !s.has("time_step"))
     HALFETI_USER_ERROR(s.key_path("time_step") << ": required when the scene has no `fluid:` (the water sets the "

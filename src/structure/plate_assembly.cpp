@@ -8,13 +8,15 @@
 
 namespace halfeti::structure {
 
-namespace {
-using RowMajor18 = Eigen::Matrix<double, kQ9Dofs, kQ9Dofs, Eigen::RowMajor>;
-}
-
 Q9Coordinates PlateSolver::element_displacement(int e) const {
   Q9Coordinates u;
   for (int a = 0; a < kQ9Nodes; ++a) u.row(a) = u_.segment<2>(2 * mesh_.elements[e][a]).transpose();
+  return u;
+}
+
+Q4Coordinates PlateSolver::quad_displacement(int e) const {
+  Q4Coordinates u;
+  for (int a = 0; a < kQ4Nodes; ++a) u.row(a) = u_.segment<2>(2 * mesh_.quads[e][a]).transpose();
   return u;
 }
 
@@ -25,6 +27,7 @@ std::vector<std::vector<int>> PlateSolver::node_adjacency() const {
       for (int b : nodes) adj[a].insert(b);
   };
   for (const auto& e : mesh_.elements) couple(e);
+  for (const auto& e : mesh_.quads) couple(e);
   for (const NodalElement* ne : nodal_elements_) couple(ne->nodes());
   std::vector<std::vector<int>> out(node_count());
   for (int n = 0; n < node_count(); ++n) out[n].assign(adj[n].begin(), adj[n].end());
@@ -106,10 +109,59 @@ void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& n
   // A numerical failure (an inverted point, a cable that cannot be solved) is raised on every rank together
   // (below), so that no rank is left waiting in the residual's reduction.
   std::string failure;
+  if (mesh_.element_type == ElementType::kQ4Eas) {
+    Q4Vector force;
+    Q4Matrix element_matrix;  // component-major: row/column 4 i + a = component i of local node a
+    Eigen::Matrix<double, kQ4Nodes, 2> element_acceleration;
+    for (int e : partition_.owned_elements) {
+      const auto& nodes = mesh_.quads[e];
+      const Q4Coordinates displacement = quad_displacement(e);
+      try {
+        if (with_matrix && stiffness_coefficient != 0.0) {
+          // The solved enhanced parameters and d alpha / du are the element's state (apply_increment).
+          integrator4_->internal_force_and_tangent_component_major(geometry4_[e], displacement, alpha_[e], force,
+                                                                   element_matrix, &alpha_update_[e]);
+        } else {
+          // Residual only: alpha solved from the state without changing it, so the iterates do not depend on
+          // whether a residual-only check preceded the assembly.
+          EasParameters alpha = alpha_[e];
+          integrator4_->internal_force(geometry4_[e], displacement, alpha, force);
+          if (with_matrix) {
+            element_matrix.setZero();
+            alpha_[e] = alpha;
+            alpha_update_[e].setZero();
+          }
+        }
+      } catch (const NumericalError& error) {
+        const Eigen::Vector2d centre = 0.25 * (position(nodes[0]) + position(nodes[1]) + position(nodes[2]) +
+                                               position(nodes[3]));
+        std::ostringstream what;
+        what << error.what() << " in element " << e << " at (" << centre.x() << ", " << centre.y()
+             << ") m, t = " << time_ << " s; hint: smaller dt, or check the loads";
+        failure = what.str();
+        break;
+      }
+      const auto& m = mass4_[e];
+      if (with_matrix && mass_coefficient != 0.0) {
+        element_matrix.block<kQ4Nodes, kQ4Nodes>(0, 0) += mass_coefficient * m;
+        element_matrix.block<kQ4Nodes, kQ4Nodes>(kQ4Nodes, kQ4Nodes) += mass_coefficient * m;
+      }
+      if (inertia_in_residual) {
+        for (int b = 0; b < kQ4Nodes; ++b) element_acceleration.row(b) = a_.segment<2>(2 * nodes[b]).transpose();
+        const Eigen::Matrix<double, kQ4Nodes, 2> inertia = m.lazyProduct(element_acceleration);
+        for (int a = 0; a < kQ4Nodes; ++a)
+          residual_.segment<2>(2 * nodes[a]) -= force.segment<2>(2 * a) + inertia.row(a).transpose();
+      } else {
+        for (int a = 0; a < kQ4Nodes; ++a) residual_.segment<2>(2 * nodes[a]) -= force.segment<2>(2 * a);
+      }
+      if (with_matrix) element_sink(e, element_matrix.data());
+    }
+  }
   Q9Vector force;
   Q9Matrix element_matrix;  // component-major: row/column 9 i + a = component i of local node a
   Eigen::Matrix<double, kQ9Nodes, 2> element_acceleration;
-  for (int e : partition_.owned_elements) {
+  static const std::vector<int> kNone;
+  for (int e : mesh_.element_type == ElementType::kQ9 ? partition_.owned_elements : kNone) {
     const auto& nodes = mesh_.elements[e];
     const Q9Coordinates displacement = element_displacement(e);
     try {
@@ -141,7 +193,7 @@ void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& n
     } else {
       for (int a = 0; a < kQ9Nodes; ++a) residual_.segment<2>(2 * nodes[a]) -= force.segment<2>(2 * a);
     }
-    if (with_matrix) element_sink(e, element_matrix);
+    if (with_matrix) element_sink(e, element_matrix.data());
   }
 
   // Nodal elements (cables): their force is internal (enters as F), their tangent adds to K. Rank 0 evaluates
@@ -209,26 +261,27 @@ void PlateSolver::add_newton_system(Mat matrix, Vec rhs, PetscInt offset) {
   PetscInt block_size = 1;
   HALFETI_PETSC_CALL(MatGetBlockSize(matrix, &block_size));
   const bool blocked = block_size == 2 && offset % 2 == 0;
-  RowMajor18 interleaved;
-  auto element_sink = [&](int e, const Q9Matrix& component_major) {
-    const auto& nodes = mesh_.elements[e];
-    for (int b = 0; b < kQ9Nodes; ++b)
-      for (int a = 0; a < kQ9Nodes; ++a)
+  const int nn = mesh_.nodes_per_element(), nd = 2 * nn;
+  double interleaved[kQ9Dofs * kQ9Dofs];  // row-major nd x nd
+  auto element_sink = [&](int e, const double* component_major) {  // column-major nd x nd, row 9 i + a
+    const int* nodes = mesh_.element_nodes(e);
+    for (int b = 0; b < nn; ++b)
+      for (int a = 0; a < nn; ++a)
         for (int i = 0; i < 2; ++i)
           for (int k = 0; k < 2; ++k)
-            interleaved(2 * a + i, 2 * b + k) = component_major(kQ9Nodes * i + a, kQ9Nodes * k + b);
-    const double* values = interleaved.data();
+            interleaved[(2 * a + i) * nd + 2 * b + k] = component_major[(nn * k + b) * nd + nn * i + a];
+    const double* values = interleaved;
     PetscInt rows[kQ9Dofs];
     // Negative indices make PETSc skip the clamped rows and columns.
     const auto& to_petsc = partition_.petsc_node;
     if (blocked) {
-      for (int a = 0; a < kQ9Nodes; ++a) rows[a] = clamped_[nodes[a]] ? -1 : to_petsc[nodes[a]] + offset / 2;
-      HALFETI_PETSC_CALL(MatSetValuesBlocked(matrix, kQ9Nodes, rows, kQ9Nodes, rows, values, ADD_VALUES));
+      for (int a = 0; a < nn; ++a) rows[a] = clamped_[nodes[a]] ? -1 : to_petsc[nodes[a]] + offset / 2;
+      HALFETI_PETSC_CALL(MatSetValuesBlocked(matrix, nn, rows, nn, rows, values, ADD_VALUES));
     } else {
-      for (int a = 0; a < kQ9Nodes; ++a)
+      for (int a = 0; a < nn; ++a)
         for (int c = 0; c < 2; ++c)
           rows[2 * a + c] = clamped_[nodes[a]] ? -1 : 2 * to_petsc[nodes[a]] + c + offset;
-      HALFETI_PETSC_CALL(MatSetValues(matrix, kQ9Dofs, rows, kQ9Dofs, rows, values, ADD_VALUES));
+      HALFETI_PETSC_CALL(MatSetValues(matrix, nd, rows, nd, rows, values, ADD_VALUES));
     }
   };
   auto nodal_sink = [&](const std::vector<int>& dofs, const double* values) {
@@ -298,15 +351,17 @@ void PlateSolver::build_scatter_map() {
   // In the storage order of the element's component-major, column-major matrix (entry c * 18 + r, with
   // r = 9 i + a the row of component i of local node a); clamped rows and columns and the lower triangle of
   // symmetric storage are left out.
-  element_scatter_.reserve(mesh_.elements.size() * kQ9Dofs * kQ9Dofs);
+  const int nn = mesh_.nodes_per_element(), nd = 2 * nn;
+  element_scatter_.reserve(static_cast<std::size_t>(mesh_.element_count()) * nd * nd);
   element_scatter_start_.push_back(0);
-  for (const auto& nodes : mesh_.elements) {
-    for (int c = 0; c < kQ9Dofs; ++c)
-      for (int r = 0; r < kQ9Dofs; ++r) {
-        const int rn = nodes[r % kQ9Nodes], cn = nodes[c % kQ9Nodes];
+  for (int e = 0; e < mesh_.element_count(); ++e) {
+    const int* nodes = mesh_.element_nodes(e);
+    for (int c = 0; c < nd; ++c)
+      for (int r = 0; r < nd; ++r) {
+        const int rn = nodes[r % nn], cn = nodes[c % nn];
         if (clamped_[rn] || clamped_[cn]) continue;
-        const PetscInt where = position(2 * rn + r / kQ9Nodes, 2 * cn + c / kQ9Nodes);
-        if (where >= 0) element_scatter_.push_back({c * kQ9Dofs + r, where});
+        const PetscInt where = position(2 * rn + r / nn, 2 * cn + c / nn);
+        if (where >= 0) element_scatter_.push_back({c * nd + r, where});
       }
     element_scatter_start_.push_back(element_scatter_.size());
   }
@@ -338,8 +393,7 @@ void PlateSolver::assemble_newton_system() {
       HALFETI_PETSC_CALL(MatSeqSBAIJGetArray(a, &values));
     else
       HALFETI_PETSC_CALL(MatSeqAIJGetArray(a, &values));
-    auto element_sink = [&](int e, const Q9Matrix& component_major) {
-      const double* m = component_major.data();
+    auto element_sink = [&](int e, const double* m) {
       const auto* end = element_scatter_.data() + element_scatter_start_[e + 1];
       for (const auto* entry = element_scatter_.data() + element_scatter_start_[e]; entry != end; ++entry)
         values[entry->second] += m[entry->first];
@@ -373,7 +427,7 @@ void PlateSolver::assemble_newton_system() {
 
 void PlateSolver::assemble_residual() {
   ScopedTimer timer(timers_, "structure_assembly");
-  compute_newton_terms([](int, const Q9Matrix&) {}, [](const std::vector<int>&, const double*) {}, false);
+  compute_newton_terms([](int, const double*) {}, [](const std::vector<int>&, const double*) {}, false);
 }
 
 }  // namespace halfeti::structure

@@ -3,6 +3,7 @@
 #include <metis.h>
 
 #include <algorithm>
+#include <array>
 #include <numeric>
 
 #include "halfeti/core/error.hpp"
@@ -13,7 +14,7 @@ PlatePartition partition_plate(const PlateMesh& mesh, MPI_Comm comm) {
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
-  const int ne = static_cast<int>(mesh.elements.size()), nn = static_cast<int>(mesh.nodes.size());
+  const int ne = mesh.element_count(), nn = static_cast<int>(mesh.nodes.size());
   if (size > ne)
     HALFETI_USER_ERROR("structure.ranks = " << size << " exceeds the plate's " << ne << " elements");
   PlatePartition p;
@@ -23,7 +24,9 @@ PlatePartition partition_plate(const PlateMesh& mesh, MPI_Comm comm) {
       // Dual graph on the corner nodes: two Q9 elements are neighbours when they share an edge (2 corners).
       std::vector<idx_t> eptr(ne + 1), eind;
       for (int e = 0; e < ne; ++e) {
-        for (int a : {0, 2, 8, 6}) eind.push_back(mesh.elements[e][a]);
+        const int* nodes = mesh.element_nodes(e);
+        const bool q9 = mesh.nodes_per_element() == 9;
+        for (int a : q9 ? std::array<int, 4>{0, 2, 8, 6} : std::array<int, 4>{0, 1, 3, 2}) eind.push_back(nodes[a]);
         eptr[e + 1] = static_cast<idx_t>(eind.size());
       }
       idx_t n_elements = ne, n_nodes = nn, common = 2, parts = size, cut = 0;
@@ -41,7 +44,8 @@ PlatePartition partition_plate(const PlateMesh& mesh, MPI_Comm comm) {
   }
   p.node_rank.assign(nn, size);
   for (int e = 0; e < ne; ++e)
-    for (int n : mesh.elements[e]) p.node_rank[n] = std::min(p.node_rank[n], p.element_rank[e]);
+    for (int k = 0; k < mesh.nodes_per_element(); ++k)
+      for (int n : {mesh.element_nodes(e)[k]}) p.node_rank[n] = std::min(p.node_rank[n], p.element_rank[e]);
   std::vector<int> order(nn);
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return p.node_rank[a] < p.node_rank[b]; });

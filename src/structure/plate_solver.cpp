@@ -46,11 +46,22 @@ PlateSolver::PlateSolver(MPI_Comm comm, const StructureParameters& params,
   material_ = make_material(m.model, m.youngs_modulus, m.poisson_ratio);
   integrator_ =
       std::make_unique<HyperelasticQ9>(*material_, Q9Options{m.hypothesis, m.selective_reduced_integration});
+  integrator4_ = std::make_unique<HyperelasticQ4Eas>(*material_, Q4EasOptions{m.hypothesis});
 
   const int n = node_count();
   clamped_.assign(n, false);
   for (int c : mesh_.clamped_nodes) clamped_[c] = true;
   mass_row_sum_ = Eigen::VectorXd::Zero(n);
+  for (const auto& e : mesh_.quads) {
+    Q4Coordinates x;
+    for (int a = 0; a < kQ4Nodes; ++a) x.row(a) = mesh_.nodes[e[a]].transpose();
+    geometry4_.push_back(HyperelasticQ4Eas::reference_geometry(x));
+    mass4_.push_back(HyperelasticQ4Eas::scalar_mass(geometry4_.back(), m.density));
+    const Eigen::Matrix<double, kQ4Nodes, 1> rows = mass4_.back().rowwise().sum();
+    for (int a = 0; a < kQ4Nodes; ++a) mass_row_sum_(e[a]) += rows(a);
+  }
+  alpha_.assign(mesh_.quads.size(), EasParameters::Zero());
+  alpha_update_.assign(mesh_.quads.size(), EasUpdate::Zero());
   for (const auto& e : mesh_.elements) {
     Q9Coordinates x;
     for (int a = 0; a < kQ9Nodes; ++a) x.row(a) = mesh_.nodes[e[a]].transpose();
@@ -108,11 +119,14 @@ void PlateSolver::add_edge_load(const std::string& edge_set, const Eigen::Vector
   auto it = mesh_.edge_sets.find(edge_set);
   if (it == mesh_.edge_sets.end())
     HALFETI_USER_ERROR("structure: no edge set '" << edge_set << "' (have left, right, top)");
-  // Uniform traction on a straight quadratic edge: consistent nodal shares 1/6, 2/3, 1/6 of t * length.
+  // Uniform traction on a straight edge: consistent nodal shares 1/6, 2/3, 1/6 of t * length on a quadratic
+  // edge, 1/2, 1/2 on a linear one (middle -1).
   for (const auto& edge : it->second) {
     const double length = (mesh_.nodes[edge[2]] - mesh_.nodes[edge[0]]).norm();
-    const double share[3] = {1.0 / 6.0, 2.0 / 3.0, 1.0 / 6.0};
-    for (int k = 0; k < 3; ++k) prescribed_loads_.segment<2>(2 * edge[k]) += share[k] * length * traction;
+    const bool linear = edge[1] < 0;
+    const double share[3] = {linear ? 0.5 : 1.0 / 6.0, linear ? 0.0 : 2.0 / 3.0, linear ? 0.5 : 1.0 / 6.0};
+    for (int k = 0; k < 3; ++k)
+      if (edge[k] >= 0) prescribed_loads_.segment<2>(2 * edge[k]) += share[k] * length * traction;
   }
 }
 
@@ -125,6 +139,9 @@ void PlateSolver::set_state(const Eigen::VectorXd& displacement, const Eigen::Ve
   u_ = displacement;
   v_ = velocity;
   for (int n : mesh_.clamped_nodes) u_.segment<2>(2 * n).setZero(), v_.segment<2>(2 * n).setZero();
+  // Q4-EAS: the enhanced parameters are re-solved from zero at the next evaluation (local Newton).
+  for (auto& alpha : alpha_) alpha.setZero();
+  for (auto& update : alpha_update_) update.setZero();
 }
 
 void PlateSolver::set_state(const Eigen::VectorXd& displacement, const Eigen::VectorXd& velocity,
@@ -140,10 +157,13 @@ std::string PlateSolver::summary() const {
   const auto& m = params_.material;
   std::ostringstream os;
   os << "structure: plate " << g.height << " m x " << g.thickness << " m, " << g.cells_across << " x "
-     << g.cells_along << " Q9 (" << mesh_.elements.size() << " elements, " << dof_count() << " dofs), "
+     << g.cells_along << (g.element == ElementType::kQ9 ? " Q9 (" : " Q4-EAS (") << mesh_.element_count()
+     << " elements, " << dof_count() << " dofs), "
      << to_string(m.model) << " E = " << m.youngs_modulus << " Pa, nu = " << m.poisson_ratio
      << ", rho = " << m.density << " kg/m^3, " << to_string(m.hypothesis) << " per unit depth, "
-     << (m.selective_reduced_integration ? "selective reduced" : "full")
+     << (g.element == ElementType::kQ4Eas              ? "2x2 (enhanced strain)"
+         : m.selective_reduced_integration ? "selective reduced"
+                                           : "full")
      << " integration, Newmark beta = " << params_.newmark.beta << " gamma = " << params_.newmark.gamma
      << ", ranks = " << size_;
   return os.str();
@@ -201,6 +221,17 @@ void PlateSolver::apply_increment(const double* du) {
   if (!std::isfinite(largest)) HALFETI_NUMERICAL_ERROR("structure: Newton increment is not finite (NaN/Inf)");
   increment_norm_ = largest;
   last_.increment_norm = largest;
+  // Q4-EAS element state after the increment (Simo & Armero 1992): alpha += (d alpha / du) du_e, the
+  // linearisation of the condensed enhanced equilibrium at the last full assembly.
+  for (int e : partition_.owned_elements) {
+    if (mesh_.element_type != ElementType::kQ4Eas) break;
+    Eigen::Matrix<double, kQ4Dofs, 1> du_e;  // component-major
+    for (int a = 0; a < kQ4Nodes; ++a) {
+      const int n = mesh_.quads[e][a];
+      for (int c = 0; c < 2; ++c) du_e(kQ4Nodes * c + a) = clamped_[n] ? 0.0 : du[2 * n + c];
+    }
+    alpha_[e].noalias() += alpha_update_[e] * du_e;
+  }
   ++last_.newton_iterations;
 }
 
@@ -308,24 +339,33 @@ StepReport PlateSolver::solve_static(double t, int load_increments) {
 
 double PlateSolver::strain_energy() const {
   double e = 0.0;
-  for (int k : partition_.owned_elements) e += integrator_->energy(geometry_[k], element_displacement(k));
+  for (int k : partition_.owned_elements)
+    e += mesh_.element_type == ElementType::kQ9 ? integrator_->energy(geometry_[k], element_displacement(k))
+                                                : integrator4_->energy(geometry4_[k], quad_displacement(k), alpha_[k]);
   return sum_over_ranks(e);
 }
 
 double PlateSolver::kinetic_energy() const {
   double e = 0.0;
   for (int k : partition_.owned_elements) {
-    const auto& nodes = mesh_.elements[k];
-    for (int a = 0; a < kQ9Nodes; ++a)
-      for (int b = 0; b < kQ9Nodes; ++b)
-        e += 0.5 * mass_[k](a, b) * v_.segment<2>(2 * nodes[a]).dot(v_.segment<2>(2 * nodes[b]));
+    const int* nodes = mesh_.element_nodes(k);
+    const int nn = mesh_.nodes_per_element();
+    for (int a = 0; a < nn; ++a)
+      for (int b = 0; b < nn; ++b)
+        e += 0.5 * (nn == kQ9Nodes ? mass_[k](a, b) : mass4_[k](a, b)) *
+             v_.segment<2>(2 * nodes[a]).dot(v_.segment<2>(2 * nodes[b]));
   }
   return sum_over_ranks(e);
 }
 
 double PlateSolver::element_von_mises(int element) const {
-  HALFETI_CHECK(element >= 0 && element < static_cast<int>(mesh_.elements.size()), "no element " << element);
+  HALFETI_CHECK(element >= 0 && element < mesh_.element_count(), "no element " << element);
   double sum = 0.0;
+  if (mesh_.element_type == ElementType::kQ4Eas) {
+    for (const auto& s : integrator4_->cauchy_at_points(geometry4_[element], quad_displacement(element), alpha_[element]))
+      sum += von_mises(s);
+    return sum / 4.0;
+  }
   for (const auto& s : integrator_->cauchy_at_points(geometry_[element], element_displacement(element)))
     sum += von_mises(s);
   return sum / 9.0;
@@ -333,9 +373,15 @@ double PlateSolver::element_von_mises(int element) const {
 
 double PlateSolver::max_von_mises() const {
   double m = 0.0;
-  for (int k : partition_.owned_elements)
+  for (int k : partition_.owned_elements) {
+    if (mesh_.element_type == ElementType::kQ4Eas) {
+      for (const auto& s : integrator4_->cauchy_at_points(geometry4_[k], quad_displacement(k), alpha_[k]))
+        m = std::max(m, von_mises(s));
+      continue;
+    }
     for (const auto& s : integrator_->cauchy_at_points(geometry_[k], element_displacement(k)))
       m = std::max(m, von_mises(s));
+  }
   double global = m;
   if (size_ > 1) MPI_Allreduce(&m, &global, 1, MPI_DOUBLE, MPI_MAX, comm_.get());
   return global;

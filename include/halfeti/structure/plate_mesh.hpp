@@ -1,6 +1,7 @@
-// Structured Q9 mesh of the standing plate: cells across the thickness (x) times cells along the height (y),
-// the base centre at a given point, the base clamped. Nodes are numbered across the thickness first, so the
-// stiffness matrix is banded with a half-bandwidth of about 2 (2 nx + 2) dofs.
+// Structured mesh of the standing plate, Q9 (default) or Q4 (the `q4_eas` element): cells across the thickness
+// (x) times cells along the height (y), the base centre at a given point, the base clamped. Nodes are numbered
+// across the thickness first, so the stiffness matrix is banded with a half-bandwidth of about 2 (nodes per
+// row + 1) dofs.
 #pragma once
 
 #include <Eigen/Dense>
@@ -11,12 +12,19 @@
 
 namespace halfeti::structure {
 
+// The plate's element: nine-node Q9 with selective reduced integration (q9_element.hpp), or four-node Q4 with
+// enhanced assumed strain (q4_eas_element.hpp).
+enum class ElementType { kQ9, kQ4Eas };
+ElementType parse_element_type(const std::string& name);  // "q9", "q4_eas"; UserError otherwise
+std::string to_string(ElementType type);
+
 struct PlateGeometry {
   double height = 0.08;                   // m, > 0 (paper: 8 cm)
   double thickness = 0.003;               // m, > 0 (paper: 0.3 cm)
   Eigen::Vector2d base_centre{0.0, 0.0};  // m, tank frame (the scene puts it mid-tank on the floor)
   int cells_across = 2;                   // Q9 cells through the thickness, >= 1
   int cells_along = 60;                   // Q9 cells along the height, >= 1 (2 x 60 = the paper's 120)
+  ElementType element = ElementType::kQ9;  // kQ4Eas needs an even cells_across (a node at the top centre)
 };
 
 // A straight piece of the outer surface between two consecutive surface nodes, for the contact coupling.
@@ -25,12 +33,14 @@ struct SurfaceSegment {
   int second = -1;  // node id; the outward normal is the tangent (second - first) turned clockwise
 };
 
-// A quadratic element edge (3 nodes: end, middle, end), for edge loads.
+// An element edge for edge loads: (end, middle, end) on a Q9 mesh; (end, -1, end) on a Q4 mesh.
 using QuadraticEdge = std::array<int, 3>;
 
 struct PlateMesh {
   std::vector<Eigen::Vector2d> nodes;        // reference positions [m]
-  std::vector<std::array<int, 9>> elements;  // Q9 connectivity, tensor order (see q9_element.hpp)
+  ElementType element_type = ElementType::kQ9;
+  std::vector<std::array<int, 9>> elements;  // Q9 connectivity, tensor order (see q9_element.hpp); Q9 only
+  std::vector<std::array<int, 4>> quads;     // Q4 connectivity, tensor order (see q4_eas_element.hpp); Q4 only
   std::vector<int> clamped_nodes;            // the base, left to right
   std::map<std::string, int> named_nodes;    // "top_left", "top_centre", "top_right", "base_left",
                                              // "base_centre", "base_right"
@@ -40,6 +50,11 @@ struct PlateMesh {
   std::vector<SurfaceSegment> surface;
 
   int node(const std::string& name) const;  // UserError naming the known names if absent
+  int element_count() const;
+  int nodes_per_element() const { return element_type == ElementType::kQ9 ? 9 : 4; }
+  const int* element_nodes(int e) const;  // nodes_per_element() ids
+  // Linear quadrilaterals for drawing, counterclockwise: each Q9 as its four sub-quads, each Q4 as itself.
+  std::vector<std::array<int, 4>> linear_cells() const;
   int cells_across = 0, cells_along = 0;
 };
 

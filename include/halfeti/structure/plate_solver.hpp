@@ -43,6 +43,7 @@
 #include "halfeti/structure/petsc_owner.hpp"
 #include "halfeti/structure/plate_mesh.hpp"
 #include "halfeti/structure/plate_partition.hpp"
+#include "halfeti/structure/q4_eas_element.hpp"
 #include "halfeti/structure/q9_element.hpp"
 
 namespace halfeti::structure {
@@ -158,7 +159,7 @@ class PlateSolver {
   Eigen::Vector2d velocity(int node) const { return v_.segment<2>(2 * node); }
   double strain_energy() const;                 // J/m, solid elements
   double kinetic_energy() const;                // J/m, 1/2 v^T M v
-  double element_von_mises(int element) const;  // Pa, mean over the element's 3x3 points (Cauchy)
+  double element_von_mises(int element) const;  // Pa, mean over the element's 3x3 (Q4: 2x2) points (Cauchy)
   double max_von_mises() const;                 // Pa, max over all points
   PhaseTimers& timers() { return timers_; }
   // One line for the run log: mesh, dofs, material, hypothesis, integration, Newmark, ranks, per unit depth.
@@ -169,8 +170,8 @@ class PlateSolver {
   enum class Mode { kDynamic, kStatic, kInitialAcceleration };
   void build_matrix();
   void build_scatter_map();
-  // Computes residual_ and hands each element's effective matrix (component-major Q9Matrix) to element_sink(e,
-  // values) and each nodal element's (dofs, row-major values) to nodal_sink; shared by both assembly paths.
+  // Computes residual_ and hands each element's effective matrix (component-major, column-major, 2 n x 2 n for
+  // n nodes per element) to element_sink(e, values) and each nodal element's (dofs, row-major values) to nodal_sink; shared by both assembly paths.
   // with_matrix false: the residual and its norms only (element forces without tangents, no sinks called).
   template <typename ElementSink, typename NodalSink>
   void compute_newton_terms(ElementSink&& element_sink, NodalSink&& nodal_sink, bool with_matrix = true);
@@ -181,6 +182,7 @@ class PlateSolver {
   void newton_loop(double t, const char* what);
   void compute_external(double t);
   Q9Coordinates element_displacement(int e) const;
+  Q4Coordinates quad_displacement(int e) const;
   void update_acceleration();
   Eigen::VectorXd gather_in_node_order(Vec v);  // a distributed Vec of the owned layout, on every rank
   double sum_over_ranks(double local) const;
@@ -193,6 +195,14 @@ class PlateSolver {
   std::unique_ptr<HyperelasticQ9> integrator_;
   std::vector<Q9Geometry> geometry_;
   std::vector<Eigen::Matrix<double, kQ9Nodes, kQ9Nodes>> mass_;  // scalar consistent mass per element
+  // Q4-EAS (mesh_.element_type == kQ4Eas): integrator, geometry, mass, and the element state: the enhanced
+  // parameters alpha (solved at the last full assembly, then moved by d alpha / du after each increment; they
+  // seed the next local solve).
+  std::unique_ptr<HyperelasticQ4Eas> integrator4_;
+  std::vector<Q4EasGeometry> geometry4_;
+  std::vector<Eigen::Matrix<double, kQ4Nodes, kQ4Nodes>> mass4_;
+  std::vector<EasParameters> alpha_;
+  std::vector<EasUpdate> alpha_update_;
   Eigen::VectorXd mass_row_sum_;                                 // per node, for body forces
   std::vector<bool> clamped_;
   std::vector<NodalElement*> nodal_elements_;
