@@ -61,12 +61,12 @@ TEST(DamBreak, SurgeFrontFollowsMartinMoyce) {
   }
   const double rms = std::sqrt(sum2 / data.size());
   // The target is 5%; not met (docs/sph.md has the table): the free-slip front leads the data at every point, by
-  // +11 to +16% before T* = 4 and +7 to +9% after, and runs at 1.83 a sqrt(2g/a) late against the data's 1.69
+  // +11 to +16% before T* = 4 and +7 to +9% after, and runs at 1.81 a sqrt(2g/a) late against the data's 1.69
   // (Ritter's ideal-fluid value is 2). The former 7.7% came from the wall-pressure defect: the clamped wall ghosts
   // tore particles in tension off the floor (-12.5 kPa at t = 10 ms), which slowed the surge. 9.4% until the
   // floor's ghosts got the particle's own horizontal pressure gradient (eqs. 6, 9; before, their pressure had none,
-  // and the particles at the floor felt only the fluid part of the gradient that drives the surge): 10.4% since.
-  // This guards the measured 10.4% against regressions.
+  // and the particles at the floor felt only the fluid part of the gradient that drives the surge): 10.2% since.
+  // This guards the measured 10.2% against regressions.
   if (rank == 0)
     std::printf("RMS relative error %.2f%% over %zu points; %ld particles, %ld steps, wall %.1f s in forces\n",
                 100 * rms, data.size(), fluid.global_count(), fluid.step_count(), fluid.timers().seconds("forces"));
