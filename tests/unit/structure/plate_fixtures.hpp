@@ -11,10 +11,12 @@
 
 namespace halfeti::structure::testing {
 
-inline StructureParameters paper_plate(int across, int along, double nu = 0.45) {
+inline StructureParameters paper_plate(int across, int along, double nu = 0.45,
+                                       ElementType element = ElementType::kQ9) {
   StructureParameters p;
   p.geometry.cells_across = across;
   p.geometry.cells_along = along;
+  p.geometry.element = element;
   p.material.poisson_ratio = nu;
   p.gravity = Eigen::Vector2d::Zero();
   return p;
