@@ -75,6 +75,11 @@ std::shared_ptr<const Schema> coupling_schema() {
                         "the plate-wall ghosts move with the plate's faces in the continuity and viscous terms "
                         "(false: at rest; the feedback was unstable)")
                .def(false));
+    s->add(Key::choice("plate_wall_exchange",
+                       "the explicit plate-water exchange: extrapolated (the water's load and the face's velocity "
+                       "extrapolated to mid-step, second order) or lagged (as computed at the step's start)",
+                       {"extrapolated", "lagged"})
+               .def("extrapolated"));
     s->add(Key::section("ssosd", "the intermediate layer", ssosd_schema()).always());
     s->add(Key::real("inside_tolerance", "depth past the surface at which a particle left inside stops the run",
                      "m")
@@ -94,6 +99,7 @@ coupling::CouplingParameters coupling_params(const scene::Node& root) {
   p.unilateral = c.boolean("unilateral");
   p.plate_wall = c.boolean("plate_wall");
   p.plate_wall_velocity = c.boolean("plate_wall_velocity");
+  p.plate_wall_extrapolated = c.string("plate_wall_exchange") == "extrapolated";
   p.mass_participation = c.string("mass_participation") == "kick_drift" ? 1.0 : 2.0;
   const scene::Node s = c.section("ssosd");
   p.ssosd.enabled = s.boolean("enabled");

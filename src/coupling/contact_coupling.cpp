@@ -85,14 +85,18 @@ void ContactCoupling::set_fluid_loads(const std::vector<sph::PlateWallLoad>& loc
     std::sort(order.begin(), order.end(), [&](int a, int b) {
       return all[4 * a] != all[4 * b] ? all[4 * a] < all[4 * b] : all[4 * a + 1] < all[4 * b + 1];
     });
-    for (auto& l : loads_) l->force.setZero();
-    for (int k : order) {  // gid order: a fixed summation order on any number of ranks
-      auto& l = *loads_[static_cast<std::size_t>(all[4 * k + 1])];
-      l.force += Eigen::Vector2d(all[4 * k + 2], all[4 * k + 3]);
-    }
-    for (const auto& l : loads_) {
-      sum[0] += l->force.x();
-      sum[1] += l->force.y();
+    std::vector<Eigen::Vector2d> load(loads_.size(), Eigen::Vector2d::Zero());
+    for (int k : order)  // gid order: a fixed summation order on any number of ranks
+      load[static_cast<std::size_t>(all[4 * k + 1])] += Eigen::Vector2d(all[4 * k + 2], all[4 * k + 3]);
+    for (std::size_t k = 0; k < loads_.size(); ++k) {
+      auto& l = *loads_[k];
+      // The plate's trapezoidal step wants the load at mid-step; the water's is from the step's start.
+      const bool extrapolate = params_.plate_wall_extrapolated && l.has_previous;
+      l.force = extrapolate ? Eigen::Vector2d(1.5 * load[k] - 0.5 * l.previous) : load[k];
+      l.previous = load[k];
+      l.has_previous = true;
+      sum[0] += load[k].x();
+      sum[1] += load[k].y();
     }
   }
   MPI_Bcast(sum, 2, MPI_DOUBLE, root_, comm_.get());
@@ -311,12 +315,18 @@ const CouplingStepReport& ContactCoupling::step(double t, double dt, const Inter
     // The surface's velocity for the water is its mean velocity over the step, (x_n+1 - x_n) / dt: the Newmark
     // (trapezoidal) nodal velocity carries the plate's undamped high-frequency content, v_n+1 = 2 (u_n+1 - u_n) /
     // dt - v_n, and fed back through the plate-wall ghosts it grew into a plate-water oscillation (docs/coupling.md).
-    static const bool newmark_velocity = std::getenv("HALFETI_NEWMARK_SURFACE_VELOCITY") != nullptr;
-    if (!newmark_velocity && before.size() == surface_.points.size())
-      for (std::size_t k = 0; k < before.size(); ++k) {
-        surface_motion_[4 * k] = (surface_.points[k].x() - before[k].x()) / dt;
-        surface_motion_[4 * k + 1] = (surface_.points[k].y() - before[k].y()) / dt;
-      }
+    // Extrapolated to the coming step's middle: 2 v_n+1/2 - v_n-1/2.
+    if (before.size() == surface_.points.size()) {
+      const bool first = mean_velocity_.size() != 2 * before.size();
+      mean_velocity_.resize(2 * before.size());
+      for (std::size_t k = 0; k < before.size(); ++k)
+        for (int c = 0; c < 2; ++c) {
+          const double v = (surface_.points[k][c] - before[k][c]) / dt;
+          const double old = first ? v : mean_velocity_[2 * k + c];
+          surface_motion_[4 * k + c] = params_.plate_wall_extrapolated ? 2.0 * v - old : v;
+          mean_velocity_[2 * k + c] = v;
+        }
+    }
   }
   return last_;
 }

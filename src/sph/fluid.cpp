@@ -225,7 +225,7 @@ void Fluid::compute_forces() {
                    rates_);
     if (!plate_wall_.empty()) {  // the plate's surface as a moving wall (plate_wall.hpp)
       plate_wall_.find_pairs(x_.data(), y_.data(), n_owned_, kernel_);
-      const PlateWallConstants pk{dx_, kernel_.h, k.rho0, c0_, k.alpha, k.body_x, k.body_y, true};
+      const PlateWallConstants pk{dx_, kernel_.h, k.rho0, c0_, k.alpha, k.body_x, k.body_y};
       plate_wall_.momentum(vx_.data(), vy_.data(), rho_.data(), p_.data(), mass_.data(), gid_.data(), pk,
                            rates_.ax.data(), rates_.ay.data());
       double a2 = rates_.max_accel * rates_.max_accel;

@@ -275,9 +275,9 @@ void PlateWall::momentum(const double* vx, const double* vy, const double* rho, 
     for (int q = start_[a]; q < start_[a + 1]; ++q) {
       const int g = ghost_[q];
       const double ex = ex_[q], ey = ey_[q], f = f_[q];
-      // Adami et al. (2012): pressure continued from the particle with the body force
-      const double pg = pi + rhoi * (k.body_x * ex + k.body_y * ey);
-      const double psum = k.clamp ? std::max(pi + pg, 0.0) : pi + pg;
+      // Adami et al. (2012): pressure continued from the particle with the body force, not clamped at zero (as
+      // the tank walls, docs/sph.md: a clamp tears particles in tension off the wall)
+      const double psum = pi + pi + rhoi * (k.body_x * ex + k.body_y * ey);
       // eq. 4 pressure term: -(1/rho_i) (p_i + p_g) V_g grad_i W, grad_i W = -F e
       double scalar = psum * gvol_[g] * f * inv_rhoi;
       const double du_dot_e = -2.0 * un * (nx * ex + ny * ey);

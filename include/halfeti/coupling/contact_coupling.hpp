@@ -55,6 +55,10 @@ struct CouplingParameters {
   // eqs. 3 and 8; false (default): the faces' ghosts are at rest, the plate pushes the water by their positions and
   // the contact (the moving-face feedback grew into a plate-water oscillation, docs/coupling.md).
   bool plate_wall_velocity = false;
+  // scene: coupling.plate_wall_exchange: extrapolated (default) hands the plate the water's load extrapolated to
+  // mid-step, 1.5 F_n - 0.5 F_n-1, and the water the face's velocity extrapolated to mid-step, 2 v_n-1/2 - v_n-3/2
+  // (second order in the lag of the explicit exchange); lagged: F_n and v_n-1/2 (docs/coupling.md, section 12).
+  bool plate_wall_extrapolated = true;
   SsosdParameters ssosd;   // scene: coupling.ssosd.{enabled,layer_ratio,velocity_floor}
   double inside_tolerance = 1e-9;  // m, > 0: an invader ending deeper than this past the surface is an error
   std::string options_prefix = "structure_contact_";  // PETSc options prefix of the contact KSP
@@ -113,6 +117,8 @@ class ContactCoupling {
   struct PointLoad : NodalElement {
     int node = 0;
     Eigen::Vector2d force = Eigen::Vector2d::Zero();
+    Eigen::Vector2d previous = Eigen::Vector2d::Zero();  // the water's load of the step before
+    bool has_previous = false;
     std::vector<int> nodes() const override { return {node}; }
     void evaluate(const std::vector<Eigen::Vector2d>&, Eigen::VectorXd& f, Eigen::MatrixXd& k) override {
       f = -force;  // external: enters the residual with the opposite sign of an internal force
@@ -125,6 +131,7 @@ class ContactCoupling {
   std::vector<std::unique_ptr<PointLoad>> loads_;  // root: one per surface point (clamped ones ignored)
   double fluid_load_[2] = {0.0, 0.0};
   std::vector<double> surface_motion_;             // every rank: vx, vy, ax, ay per surface point
+  std::vector<double> mean_velocity_;              // every rank: vx, vy per surface point over the last step
   double thickness_ = 0.0;  // m, the plate's: bounds how deep inside an invader can be found
   structure::PlateSolver* solver_;
   CouplingParameters params_;

@@ -37,7 +37,6 @@ struct LatticeOffsets {
 struct PlateWallConstants {
   double dx = 0.0, h = 0.0, rho0 = 0.0, c0 = 0.0, alpha = 0.0;
   double body_x = 0.0, body_y = 0.0;
-  bool clamp = true;  // a wall pushes, never pulls (as the tank walls)
 };
 
 // Ghost lattice (docs/coupling.md, section 12): the plate (its outline runs up the right face, across the top and
