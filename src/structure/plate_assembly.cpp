@@ -117,18 +117,18 @@ void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& n
       const auto& nodes = mesh_.quads[e];
       const Q4Coordinates displacement = quad_displacement(e);
       try {
+        // alpha is solved from the element's start value alpha_[e], which only apply_increment() changes, so a
+        // residual-only check before an assembly (step()) or none (the coupling's loop) gives the same bits.
+        EasParameters alpha = alpha_[e];
         if (with_matrix && stiffness_coefficient != 0.0) {
-          // The solved enhanced parameters and d alpha / du are the element's state (apply_increment).
-          integrator4_->internal_force_and_tangent_component_major(geometry4_[e], displacement, alpha_[e], force,
+          integrator4_->internal_force_and_tangent_component_major(geometry4_[e], displacement, alpha, force,
                                                                    element_matrix, &alpha_update_[e]);
+          alpha_solved_[e] = alpha;
         } else {
-          // Residual only: alpha solved from the state without changing it, so the iterates do not depend on
-          // whether a residual-only check preceded the assembly.
-          EasParameters alpha = alpha_[e];
           integrator4_->internal_force(geometry4_[e], displacement, alpha, force);
           if (with_matrix) {
             element_matrix.setZero();
-            alpha_[e] = alpha;
+            alpha_solved_[e] = alpha;
             alpha_update_[e].setZero();
           }
         }

@@ -62,6 +62,7 @@ PlateSolver::PlateSolver(MPI_Comm comm, const StructureParameters& params,
   }
   alpha_.assign(mesh_.quads.size(), EasParameters::Zero());
   alpha_update_.assign(mesh_.quads.size(), EasUpdate::Zero());
+  alpha_solved_ = alpha_;
   for (const auto& e : mesh_.elements) {
     Q9Coordinates x;
     for (int a = 0; a < kQ9Nodes; ++a) x.row(a) = mesh_.nodes[e[a]].transpose();
@@ -141,6 +142,7 @@ void PlateSolver::set_state(const Eigen::VectorXd& displacement, const Eigen::Ve
   for (int n : mesh_.clamped_nodes) u_.segment<2>(2 * n).setZero(), v_.segment<2>(2 * n).setZero();
   // Q4-EAS: the enhanced parameters are re-solved from zero at the next evaluation (local Newton).
   for (auto& alpha : alpha_) alpha.setZero();
+  for (auto& alpha : alpha_solved_) alpha.setZero();
   for (auto& update : alpha_update_) update.setZero();
 }
 
@@ -221,8 +223,8 @@ void PlateSolver::apply_increment(const double* du) {
   if (!std::isfinite(largest)) HALFETI_NUMERICAL_ERROR("structure: Newton increment is not finite (NaN/Inf)");
   increment_norm_ = largest;
   last_.increment_norm = largest;
-  // Q4-EAS element state after the increment (Simo & Armero 1992): alpha += (d alpha / du) du_e, the
-  // linearisation of the condensed enhanced equilibrium at the last full assembly.
+  // Q4-EAS element state after the increment (Simo & Armero 1992): alpha = alpha_solved + (d alpha / du) du_e,
+  // the linearisation of the condensed enhanced equilibrium at the last full assembly.
   for (int e : partition_.owned_elements) {
     if (mesh_.element_type != ElementType::kQ4Eas) break;
     Eigen::Matrix<double, kQ4Dofs, 1> du_e;  // component-major
@@ -230,6 +232,7 @@ void PlateSolver::apply_increment(const double* du) {
       const int n = mesh_.quads[e][a];
       for (int c = 0; c < 2; ++c) du_e(kQ4Nodes * c + a) = clamped_[n] ? 0.0 : du[2 * n + c];
     }
+    alpha_[e] = alpha_solved_[e];
     alpha_[e].noalias() += alpha_update_[e] * du_e;
   }
   ++last_.newton_iterations;

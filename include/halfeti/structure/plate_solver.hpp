@@ -195,13 +195,14 @@ class PlateSolver {
   std::unique_ptr<HyperelasticQ9> integrator_;
   std::vector<Q9Geometry> geometry_;
   std::vector<Eigen::Matrix<double, kQ9Nodes, kQ9Nodes>> mass_;  // scalar consistent mass per element
-  // Q4-EAS (mesh_.element_type == kQ4Eas): integrator, geometry, mass, and the element state: the enhanced
-  // parameters alpha (solved at the last full assembly, then moved by d alpha / du after each increment; they
-  // seed the next local solve).
+  // Q4-EAS (mesh_.element_type == kQ4Eas): integrator, geometry, mass, and the element state: alpha_, the start
+  // of every local solve of the enhanced parameters, changed only by apply_increment() to alpha_solved_ + (d
+  // alpha / du) du (both from the last full assembly), so the iterates do not depend on which evaluations
+  // (residual-only or full) came in between.
   std::unique_ptr<HyperelasticQ4Eas> integrator4_;
   std::vector<Q4EasGeometry> geometry4_;
   std::vector<Eigen::Matrix<double, kQ4Nodes, kQ4Nodes>> mass4_;
-  std::vector<EasParameters> alpha_;
+  std::vector<EasParameters> alpha_, alpha_solved_;
   std::vector<EasUpdate> alpha_update_;
   Eigen::VectorXd mass_row_sum_;                                 // per node, for body forces
   std::vector<bool> clamped_;

@@ -73,6 +73,52 @@ TEST(PlateMesh, SurfaceIsAContinuousCounterclockwiseChainWithoutTheBase) {
   EXPECT_NEAR(signed_area, g.height * g.thickness, 1e-12);
 }
 
+// The Q4 mesh (element q4_eas): the same named nodes, base and counterclockwise surface as the Q9 mesh of the
+// same cells, with (cells + 1) nodes per line; 2-node edges; tensor-order quads; an odd count across is refused.
+TEST(PlateMesh, Q4MeshHasTheSameNamedNodesBaseAndSurface) {
+  auto g = geometry(2, 10);
+  g.element = hs::ElementType::kQ4Eas;
+  const auto m = hs::make_plate_mesh(g);
+  EXPECT_TRUE(m.elements.empty());
+  EXPECT_EQ(m.element_count(), 20);
+  EXPECT_EQ(m.nodes_per_element(), 4);
+  EXPECT_EQ(m.nodes.size(), 3u * 11u);
+  EXPECT_EQ(m.clamped_nodes.size(), 3u);
+  auto g9 = geometry(2, 10);
+  const auto m9 = hs::make_plate_mesh(g9);
+  for (const auto& [name, id] : m9.named_nodes) EXPECT_TRUE(m.nodes[m.node(name)].isApprox(m9.nodes[id])) << name;
+  for (const auto& q : m.quads) {
+    const Eigen::Vector2d dx = m.nodes[q[1]] - m.nodes[q[0]], dy = m.nodes[q[2]] - m.nodes[q[0]];
+    EXPECT_GT(dx.x() * dy.y() - dx.y() * dy.x(), 0.0);
+    EXPECT_TRUE((m.nodes[q[3]] - m.nodes[q[0]]).isApprox(dx + dy));
+  }
+  ASSERT_EQ(m.surface.size(), 22u);  // 10 + 2 + 10
+  EXPECT_EQ(m.surface.front().first, m.node("base_right"));
+  EXPECT_EQ(m.surface.back().second, m.node("base_left"));
+  double signed_area = 0.0;
+  for (std::size_t k = 0; k < m.surface.size(); ++k) {
+    if (k > 0) {
+      EXPECT_EQ(m.surface[k].first, m.surface[k - 1].second);
+    }
+    const Eigen::Vector2d a = m.nodes[m.surface[k].first], b = m.nodes[m.surface[k].second];
+    signed_area += 0.5 * (a.x() * b.y() - b.x() * a.y());
+    EXPECT_GT(0.5 * (a + b).y(), 0.01);
+  }
+  const Eigen::Vector2d a = m.nodes[m.node("base_left")], b = m.nodes[m.node("base_right")];
+  signed_area += 0.5 * (a.x() * b.y() - b.x() * a.y());
+  EXPECT_NEAR(signed_area, g.height * g.thickness, 1e-12);
+  EXPECT_EQ(m.edge_sets.at("top").size(), 2u);
+  EXPECT_EQ(m.edge_sets.at("left").size(), 10u);
+  for (const auto& e : m.edge_sets.at("top")) EXPECT_EQ(e[1], -1);
+  EXPECT_EQ(m.linear_cells().size(), 20u);
+  EXPECT_EQ(m9.linear_cells().size(), 80u);
+  auto odd = geometry(1, 10);
+  odd.element = hs::ElementType::kQ4Eas;
+  EXPECT_THROW(hs::make_plate_mesh(odd), halfeti::UserError);
+  EXPECT_THROW(hs::parse_element_type("q8"), halfeti::UserError);
+  EXPECT_EQ(hs::parse_element_type("q4_eas"), hs::ElementType::kQ4Eas);
+}
+
 TEST(PlateMesh, EdgeSetsCoverTheirFaces) {
   const auto g = geometry(2, 10);
   const auto m = hs::make_plate_mesh(g);
