@@ -75,10 +75,14 @@ Q4EasGeometry HyperelasticQ4Eas::reference_geometry(const Q4Coordinates& referen
 // gradients) and m = mu - lambda ln J, K(6i+a, 6k+b) = w (lambda q_ai q_bk + m q_ak q_bi) + mu delta_ik L_ab.
 template <bool kFull>
 void HyperelasticQ4Eas::evaluate(const Q4EasGeometry& g, const Extended& U, Extended& force, Tangent12& k) const {
-  constexpr int kRowBegin = kFull ? 0 : 4;
+  // kFull false (the force-only path) fills the alpha rows of the tangent only (the local solve and the force's
+  // condensation need nothing else), each entry computed exactly as in the full path.
   force.setZero();
-  k.setZero();
   const double mu = material_.mu(), lambda = material_.lambda();
+  // Closed form: per point, K_00 += (wl + wm) q0 q0^T, K_11 += (wl + wm) q1 q1^T, K_01 += wl q0 q1^T + wm q1 q0^T
+  // (entry [b][a] = row a, column b), K_10 = K_01^T.
+  double k00[6][6] = {}, k11[6][6] = {}, k01[6][6] = {};
+  if (!closed_form_) k.setZero();
   for (const auto& p : g.points) {
     const Eigen::Matrix<double, 6, 2>& gr = p.gradient;
     const Eigen::Matrix2d h = U.transpose() * gr;  // H = sum_a U_a (x) g_a
@@ -105,18 +109,35 @@ void HyperelasticQ4Eas::evaluate(const Q4EasGeometry& g, const Extended& U, Exte
       s(0, 1) = s(1, 0) = 2.0 * mu * (ci00 * e01 + ci01 * e11) + bulk * ci01;
       const double inv = 1.0 / det_f;
       const double i00 = f11 * inv, i01 = -f01 * inv, i10 = -f10 * inv, i11 = f00 * inv;  // F^-1
-      double q[2][6];
-      for (int a = 0; a < 6; ++a) {
-        q[0][a] = gr(a, 0) * i00 + gr(a, 1) * i10;
-        q[1][a] = gr(a, 0) * i01 + gr(a, 1) * i11;
-      }
+      double q0[6], q1[6], d0[6], d1[6], l0[6], m1[6];
       const double wl = w * lambda, wm = w * (mu - lambda * log_j);
-      for (int i = 0; i < 2; ++i)
-        for (int kk = 0; kk < 2; ++kk)
-          for (int b = 0; b < 6; ++b) {
-            const double lb = wl * q[kk][b], mb = wm * q[i][b];
-            for (int a = kRowBegin; a < 6; ++a) k(6 * i + a, 6 * kk + b) += lb * q[i][a] + mb * q[kk][a];
+      for (int a = 0; a < 6; ++a) {
+        q0[a] = gr(a, 0) * i00 + gr(a, 1) * i10;
+        q1[a] = gr(a, 0) * i01 + gr(a, 1) * i11;
+        d0[a] = (wl + wm) * q0[a];
+        d1[a] = (wl + wm) * q1[a];
+        l0[a] = wl * q0[a];
+        m1[a] = wm * q1[a];
+      }
+      if constexpr (kFull) {
+        for (int b = 0; b < 6; ++b)
+          for (int a = 0; a < 6; ++a) {
+            k00[b][a] += d0[a] * q0[b];
+            k11[b][a] += d1[a] * q1[b];
+            k01[b][a] += l0[a] * q1[b] + m1[a] * q0[b];
           }
+      } else {
+        // The alpha rows only: K(4 + m, .) and K(10 + m, .), i.e. k00, k11, k01 at a = 4, 5 and k01 at b = 4, 5;
+        // each entry by the same expression as above (same bits).
+        for (int b = 0; b < 6; ++b)
+          for (int a = 4; a < 6; ++a) {
+            k00[b][a] += d0[a] * q0[b];
+            k11[b][a] += d1[a] * q1[b];
+            k01[b][a] += l0[a] * q1[b] + m1[a] * q0[b];
+          }
+        for (int b = 4; b < 6; ++b)
+          for (int a = 0; a < 4; ++a) k01[b][a] += l0[a] * q1[b] + m1[a] * q0[b];
+      }
     } else {
       const PlaneResponse r = plane_response(material_, green_lagrange(h), options_.hypothesis);
       s << r.stress(0), r.stress(2), r.stress(2), r.stress(1);
@@ -133,8 +154,7 @@ void HyperelasticQ4Eas::evaluate(const Q4EasGeometry& g, const Extended& U, Exte
               a_ik(jj, ll) = w * sum;
             }
           const Eigen::Matrix<double, 6, 2> ga = gr * a_ik;
-          for (int b = 0; b < 6; ++b)
-            for (int a = kRowBegin; a < 6; ++a) k(6 * i + a, 6 * kk + b) += ga.row(a).dot(gr.row(b));
+          k.block<6, 6>(6 * i, 6 * kk).noalias() += ga * gr.transpose();
         }
     }
     // P = F S; force(a, i) += w P_iJ g_aJ.
@@ -146,9 +166,13 @@ void HyperelasticQ4Eas::evaluate(const Q4EasGeometry& g, const Extended& U, Exte
     }
   }
   if (closed_form_)
-    for (int i = 0; i < 2; ++i)
-      for (int b = 0; b < 6; ++b)
-        for (int a = kRowBegin; a < 6; ++a) k(6 * i + a, 6 * i + b) += mu * g.laplacian(a, b);
+    for (int b = 0; b < 6; ++b)
+      for (int a = 0; a < 6; ++a) {
+        const double mu_l = mu * g.laplacian(a, b);
+        k(a, b) = k00[b][a] + mu_l;
+        k(6 + a, 6 + b) = k11[b][a] + mu_l;
+        k(a, 6 + b) = k(6 + b, a) = k01[b][a];
+      }
 }
 
 template <bool kFull>
