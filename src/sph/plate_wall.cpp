@@ -30,71 +30,90 @@ void PlateWall::offset_outline(const PlateOutline& o, double dx) {
   point_.resize(n);
   for (int k = 0; k < n; ++k) point_[k] = k;
   outline_ = o;
-  const int c1 = corner(o, false), c2 = corner(o, true);
-  if (c1 <= 0 || c2 <= c1 || (offsets_.right == 0.0 && offsets_.left == 0.0 && offsets_.top == 0.0)) return;
+  // The corners from the true outline (the offset one may have short segments near them).
+  right_end_ = corner(o, false);
+  left_start_ = corner(o, true);
+  const int c1 = right_end_, c2 = left_start_;
+  HALFETI_CHECK(c1 > 0 && c2 > c1 && c1 == n - 1 - c2,
+                "the plate's outline must run up one face, across the top and down the other with as many points "
+                "on each face (corners at " << c1 << " and " << c2 << " of " << n << ")");
+  if (offsets_.right == 0.0 && offsets_.left == 0.0 && offsets_.top == 0.0) return;
   // Outward unit normal of segment s (the tangent turned clockwise).
-  auto normal = [&](int s, double& nx, double& ny) {
+  auto normal = [&](int s) {
     const double tx = o.x[s + 1] - o.x[s], ty = o.y[s + 1] - o.y[s], l = std::hypot(tx, ty);
-    nx = ty / l;
-    ny = -tx / l;
+    return std::pair{ty / l, -tx / l};
   };
-  // A face point's normal: the mean of its face's segments beside it.
-  auto face_normal = [&](int k, int first_seg, int last_seg, double& nx, double& ny) {
-    nx = ny = 0.0;
-    for (int s : {k - 1, k}) {
-      if (s < first_seg || s > last_seg) continue;
-      double sx, sy;
-      normal(s, sx, sy);
-      nx += sx;
-      ny += sy;
-    }
+  // The faces move along their normals (a point's: the mean of its face's segments beside it).
+  auto face_shift = [&](int k, int first_seg, int last_seg, double offset) {
+    double nx = 0.0, ny = 0.0;
+    for (int s : {k - 1, k})
+      if (s >= first_seg && s <= last_seg) {
+        const auto [sx, sy] = normal(s);
+        nx += sx;
+        ny += sy;
+      }
     const double l = std::hypot(nx, ny);
-    nx /= l;
-    ny /= l;
+    return std::pair{offset * nx / l, offset * ny / l};
   };
-  // The plate's axis at the top: the mean upward tangent of the two faces' last segments.
-  double ax = (o.x[c1] - o.x[c1 - 1]) + (o.x[c2] - o.x[c2 + 1]), ay = (o.y[c1] - o.y[c1 - 1]) + (o.y[c2] - o.y[c2 + 1]);
-  const double al = std::hypot(ax, ay);
-  ax /= al;
-  ay /= al;
-  double nrx, nry, nlx, nly;
-  face_normal(c1, 0, c1 - 1, nrx, nry);
-  face_normal(c2, c2, n - 2, nlx, nly);
   for (int k = 0; k < n; ++k) {
-    double mx, my;
-    if (k < c1) {
-      face_normal(k, 0, c1 - 1, mx, my);
-      mx *= offsets_.right;
-      my *= offsets_.right;
-    } else if (k > c2) {
-      face_normal(k, c2, n - 2, mx, my);
-      mx *= offsets_.left;
-      my *= offsets_.left;
-    } else {  // the top and its corners: up the axis, and sideways as the faces beside
-      const double s = static_cast<double>(k - c1) / (c2 - c1);
-      mx = offsets_.top * ax + (1.0 - s) * offsets_.right * nrx + s * offsets_.left * nlx;
-      my = offsets_.top * ay + (1.0 - s) * offsets_.right * nry + s * offsets_.left * nly;
-    }
+    if (k > c1 && k < c2) continue;  // the top's inner points follow the corners (below)
+    const auto [mx, my] = k <= c1 ? face_shift(k, 0, c1 - 1, offsets_.right) : face_shift(k, c2, n - 2, offsets_.left);
     outline_.x[k] = o.x[k] + mx;
     outline_.y[k] = o.y[k] + my;
   }
-  // A lowered top passes face points below the old corner: drop those left less than dx/20 below the new one
-  // (as many on both faces, so that they keep pairing up).
-  auto height = [&](int k) { return ax * outline_.x[k] + ay * outline_.y[k]; };
-  int m = 0;
-  while (m + 2 < c1 && (height(c1) - height(c1 - 1 - m) < 0.05 * dx || height(c2) - height(c2 + 1 + m) < 0.05 * dx))
-    ++m;
-  if (m == 0) return;
+  // The top moves along the faces: each corner slides down its face by -offset (dropping the face points it
+  // passes, as many on both faces so that they keep pairing up), or up along its last segment's direction.
+  int drop = 0;
+  double corner_x[2], corner_y[2];
+  for (int side = 0; side < 2; ++side) {
+    const int c = side == 0 ? c1 : c2, step = side == 0 ? -1 : 1;  // step: from the corner down the face
+    double remaining = -offsets_.top, x = outline_.x[c], y = outline_.y[c];
+    int k = c, passed = 0;
+    if (remaining < 0.0) {  // raised top: extend the last segment
+      const double tx = x - outline_.x[c + step], ty = y - outline_.y[c + step], l = std::hypot(tx, ty);
+      x -= remaining * tx / l;
+      y -= remaining * ty / l;
+    }
+    while (remaining > 0.0) {
+      const int next = k + step;
+      const double l = std::hypot(outline_.x[next] - x, outline_.y[next] - y);
+      if (l > remaining + 0.05 * dx) {  // stop on this segment, leaving it at least dx/20 long
+        x += remaining / l * (outline_.x[next] - x);
+        y += remaining / l * (outline_.y[next] - y);
+        break;
+      }
+      remaining -= l;
+      x = outline_.x[next];
+      y = outline_.y[next];
+      k = next;
+      ++passed;
+      HALFETI_CHECK(passed + 2 < c1, "the plate is shorter than its lattice offset " << offsets_.top << " m");
+    }
+    drop = std::max(drop, passed);
+    corner_x[side] = x;
+    corner_y[side] = y;
+  }
+  // The top's points between the corners move with them, in proportion.
+  const double sx0 = corner_x[0] - o.x[c1], sy0 = corner_y[0] - o.y[c1];
+  const double sx1 = corner_x[1] - o.x[c2], sy1 = corner_y[1] - o.y[c2];
+  for (int k = c1; k <= c2; ++k) {
+    const double f = static_cast<double>(k - c1) / (c2 - c1);
+    outline_.x[k] = o.x[k] + (1.0 - f) * sx0 + f * sx1;
+    outline_.y[k] = o.y[k] + (1.0 - f) * sy0 + f * sy1;
+  }
+  if (drop == 0) return;
   PlateOutline cut;
   point_.clear();
   for (int k = 0; k < n; ++k) {
-    if ((k >= c1 - m && k < c1) || (k > c2 && k <= c2 + m)) continue;
+    if ((k >= c1 - drop && k < c1) || (k > c2 && k <= c2 + drop)) continue;
     for (auto [to, from] : {std::pair{&cut.x, &outline_.x}, {&cut.y, &outline_.y}, {&cut.vx, &outline_.vx},
                             {&cut.vy, &outline_.vy}, {&cut.ax, &outline_.ax}, {&cut.ay, &outline_.ay}})
       to->push_back((*from)[k]);
     point_.push_back(k);
   }
   outline_ = std::move(cut);
+  right_end_ -= drop;
+  left_start_ -= drop;
 }
 
 std::vector<Barrier> PlateWall::midline() const {
@@ -104,7 +123,8 @@ std::vector<Barrier> PlateWall::midline() const {
 }
 
 void PlateWall::set_outline(const PlateOutline& true_outline, double dx, double support) {
-  offset_outline(true_outline, dx);
+  outline_ = PlateOutline{};
+  if (true_outline.size() >= 2) offset_outline(true_outline, dx);
   const PlateOutline& o = outline_;
   support_ = support;
   gx_.clear(); gy_.clear(); gvol_.clear(); gregion_.clear(); gfibre_.clear(); row_start_.clear();
@@ -112,11 +132,6 @@ void PlateWall::set_outline(const PlateOutline& true_outline, double dx, double 
   fibres_ = 0;
   const int n = static_cast<int>(o.size());
   if (n < 2) return;
-  right_end_ = corner(o, false);
-  left_start_ = corner(o, true);
-  HALFETI_CHECK(right_end_ > 0 && left_start_ > right_end_ && right_end_ == n - 1 - left_start_,
-                "the plate's outline must run up one face, across the top and down the other with as many points "
-                "on each face (corners at " << right_end_ << " and " << left_start_ << " of " << n << ")");
   fibres_ = right_end_;
   for (int k = 0; k <= fibres_; ++k) {  // the mid-line, as ContactCoupling::midline()
     mid_x_.push_back(0.5 * (o.x[k] + o.x[n - 1 - k]));

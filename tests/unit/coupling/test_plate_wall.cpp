@@ -170,5 +170,24 @@ void PlateWallSupport::scan_near_the_top() {
   EXPECT_LT(worst_g, 0.004);
 }
 
+
+TEST(PlateWallOffsets, ABentPlatesTopSlidesAlongItsFaces) {
+  // The paper's plate bent as x += c y^2 (tip 30 mm to the right), its top lowered by half a spacing: the corners
+  // slide 0.5 mm down their faces, so the top's middle moves 0.5 mm along the bent plate, and the faces keep
+  // pairing up (the layout is built without error).
+  PlateOutline o = paper_outline(0.08);
+  const double c = 0.03 / (0.08 * 0.08);
+  for (std::size_t k = 0; k < o.size(); ++k) o.x[k] += c * o.y[k] * o.y[k];
+  PlateWall wall;
+  wall.set_offsets({0.0, 0.0, -0.0005});
+  const Kernel kernel{KernelKind::kCubicSpline, 1.33 * kDx, 1.0};
+  ASSERT_NO_THROW(wall.set_outline(o, kDx, kernel.support()));
+  const auto& m = wall.midline();
+  const double tx = 0.15 + c * 0.08 * 0.08, ty = 0.08;  // the true top's middle
+  const double moved = std::hypot(m.back().xb - tx, m.back().yb - ty);
+  EXPECT_NEAR(moved, 0.0005, 0.02 * 0.0005) << "the top's middle moved by " << moved << " m";
+  EXPECT_GT(wall.ghost_count(), 0u);
+}
+
 }  // namespace
 }  // namespace halfeti::sph
