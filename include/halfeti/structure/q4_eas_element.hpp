@@ -13,8 +13,10 @@
 // makes int H~ dA = 0 exactly under 2x2 Gauss (xi, eta odd): the element passes the patch test. The modes supply
 // the linear-in-xi shear and the Poisson terms that the bilinear field lacks in bending (no shear locking) and
 // relax the volumetric constraint to one per element in effect (no volumetric locking at nu -> 0.5).
-// Because the four modes span every spatial direction (H~ -> R H~ is alpha -> R alpha), F stays objective
-// without the F0 pre-multiplication of later variants.
+// Because the four modes span every spatial direction (H~ -> R H~ is alpha -> R alpha), F stays objective as
+// written. Pre-multiplying the modes by the centre's F0 (F = I + Grad u + F0 H~(alpha)) spans the same space for
+// any invertible F0 (F0 H~(alpha) = H~(alpha') with alpha' = F0 alpha per mode vector), so after the condensation
+// both give the same force and tangent; only the parametrisation of alpha differs.
 //
 // alpha is condensed per element: the enhanced equilibrium h(u, alpha) = dPi/dalpha = 0 is solved by a local
 // Newton iteration from a start value, and the element returns the condensed force and the consistent condensed
