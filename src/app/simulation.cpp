@@ -346,11 +346,8 @@ void Simulation::write_plate_fields(double t) {
       ux.push_back(u.x());
       uy.push_back(u.y());
     }
-    // Each Q9 (tensor order a = i + 3 j) drawn as its four linear quadrilaterals.
-    for (const auto& e : mesh.elements)
-      for (int j = 0; j < 2; ++j)
-        for (int i = 0; i < 2; ++i)
-          for (int a : {i + 3 * j, i + 1 + 3 * j, i + 1 + 3 * (j + 1), i + 3 * (j + 1)}) cells.push_back(e[a]);
+    // Drawn as linear quadrilaterals (a Q9 as its four quarters).
+    for (const auto& q : mesh.linear_cells()) cells.insert(cells.end(), q.begin(), q.end());
   }
   io::CellBlock block{"Quadrilateral", 4, cells.data(), cells.size() / 4};
   plate_fields_->write(t, x.size(), x.data(), y.data(), {{"ux", ux.data()}, {"uy", uy.data()}}, &block);
@@ -491,10 +488,7 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
     for (const auto& [phase, seconds] : parts_.plate->timers().all()) plate.add(phase, seconds);
     timers.merge(plate);
   }
-  const long long dofs = parts_.structure_setup
-                             ? 2LL * (2 * parts_.structure_setup->params.geometry.cells_across + 1) *
-                                   (2 * parts_.structure_setup->params.geometry.cells_along + 1)
-                             : 0;
+  const long long dofs = parts_.plate ? parts_.plate->dof_count() : 0;  // written by rank 0, a structure rank
   if (rank_ != 0) return;
   const scene::Node root = scene_.root();
   io::Json j = io::Json::object();

@@ -30,13 +30,19 @@ void PlateWall::offset_outline(const PlateOutline& o, double dx) {
   point_.resize(n);
   for (int k = 0; k < n; ++k) point_[k] = k;
   outline_ = o;
-  // The corners from the true outline (the offset one may have short segments near them).
-  right_end_ = corner(o, false);
-  left_start_ = corner(o, true);
+  // The corners: found on the first outline (the plate at rest, its top turning by 90 degrees) and kept, since
+  // the surface's topology never changes (a strongly bent plate can turn by more than 45 degrees elsewhere).
+  if (n != corner_points_) {
+    corner_right_ = corner(o, false);
+    corner_left_ = corner(o, true);
+    corner_points_ = n;
+    HALFETI_CHECK(corner_right_ > 0 && corner_left_ > corner_right_ && corner_right_ == n - 1 - corner_left_,
+                  "the plate's outline must run up one face, across the top and down the other with as many "
+                  "points on each face (corners at " << corner_right_ << " and " << corner_left_ << " of " << n << ")");
+  }
+  right_end_ = corner_right_;
+  left_start_ = corner_left_;
   const int c1 = right_end_, c2 = left_start_;
-  HALFETI_CHECK(c1 > 0 && c2 > c1 && c1 == n - 1 - c2,
-                "the plate's outline must run up one face, across the top and down the other with as many points "
-                "on each face (corners at " << c1 << " and " << c2 << " of " << n << ")");
   if (offsets_.right == 0.0 && offsets_.left == 0.0 && offsets_.top == 0.0) return;
   // Outward unit normal of segment s (the tangent turned clockwise).
   auto normal = [&](int s) {

@@ -81,6 +81,7 @@ class PlateWall {
   std::vector<int> point_;  // outline_ point -> the true outline's point (where loads go)
   LatticeOffsets offsets_;
   double support_ = 0.0;
+  int corner_points_ = -1, corner_right_ = 0, corner_left_ = 0;  // the true outline's corners, found once
   int right_end_ = 0, left_start_ = 0;  // outline points [0, right_end_] up the right face, [left_start_, n) down the left
   int fibres_ = 0, fibre_window_ = 0, row_window_ = 0;
   double dx_ = 0.0;
