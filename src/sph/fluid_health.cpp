@@ -35,7 +35,45 @@ void Fluid::warn(const std::string& kind, bool active, bool cleared, const std::
   }
 }
 
+void Fluid::remove_spilled() {
+  // The tank is open at the top: water thrown over it leaves the run, as it would leave the real tank. Removed in
+  // place (owned particles are compacted before migration), counted, and reported once per episode.
+  const double H = params_.tank_height;
+  long removed = 0, key = std::numeric_limits<long>::max();
+  double mass = 0.0;
+  std::string msg;
+  int kept = 0;
+  for (int i = 0; i < n_owned_; ++i) {
+    if (std::isfinite(y_[i]) && y_[i] > H) {
+      ++removed;
+      mass += mass_[i];
+      if (gid_[i] < key) {
+        key = gid_[i];
+        msg = "particle " + std::to_string(gid_[i]) + " at " + point(x_[i], y_[i]);
+      }
+      continue;
+    }
+    for (auto* v : {&x_, &y_, &vx_, &vy_, &rho_, &mass_}) (*v)[kept] = (*v)[i];
+    gid_[kept] = gid_[i];
+    ++kept;
+  }
+  for (auto* v : {&x_, &y_, &vx_, &vy_, &rho_, &mass_}) v->resize(kept);
+  gid_.resize(kept);
+  n_owned_ = n_local_ = kept;
+  double sums[2] = {static_cast<double>(removed), mass};
+  MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, comm_.get());
+  const std::string first = first_problem(comm_.get(), removed > 0, key, msg);
+  n_global_ -= static_cast<long>(sums[0]);
+  spilled_mass_ += sums[1];
+  std::ostringstream os;
+  if (sums[0] > 0)
+    os << where(time_, step_) << static_cast<long>(sums[0]) << " particle(s) left over the tank's open top (first: "
+       << first << "); removed, " << spilled_mass_ << " kg/m spilled so far";
+  warn("spilled", sums[0] > 0, sums[0] == 0, os.str());
+}
+
 void Fluid::check_health() {
+  remove_spilled();
   const std::string at = where(time_, step_);
   // Fatal: NaN/Inf, then a particle outside the tank. The lowest global id found on any rank is reported.
   long key = std::numeric_limits<long>::max();
@@ -54,7 +92,7 @@ void Fluid::check_health() {
     } else if (x_[i] < 0.0 || x_[i] > L || y_[i] < 0.0 || y_[i] > H) {
       k = "outside_tank";
       m = at + "particle " + std::to_string(gid_[i]) + " at " + point(x_[i], y_[i]) +
-          " is outside the tank (wall repulsion too weak for this speed, or dt too large)";
+          " left the tank through a wall (wall repulsion too weak for this speed, or dt too large)";
     } else {
       continue;
     }

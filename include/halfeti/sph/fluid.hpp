@@ -88,6 +88,8 @@ class Fluid {
   double free_surface_elevation(double x) const;            // top fluid particle in |x_i - x| <= dx, + dx/2
   double front_position(double y_max) const;                // max x of fluid particles below y_max, + dx/2
   double total_mass() const;
+  // Water that left over the tank's open top (removed from the run, per unit depth [kg/m]), every rank.
+  double spilled_mass() const { return spilled_mass_; }
   double kinetic_energy() const;
   double max_density_variation() const;                     // max |rho - rho0| / rho0
 
@@ -103,6 +105,7 @@ class Fluid {
   void sort_owned_by_cell();
   void exchange_halo();
   void check_health();
+  void remove_spilled();
   void maybe_rebalance();
   void migrate();
   std::vector<long> global_cell_counts() const;
@@ -125,6 +128,7 @@ class Fluid {
   // Local particles: [0, n_owned_) owned, then ghosts (after exchange_halo()).
   int n_owned_ = 0, n_local_ = 0;
   long n_global_ = 0;
+  double spilled_mass_ = 0.0;
   std::vector<std::int64_t> gid_;
   std::vector<double> x_, y_, vx_, vy_, rho_, mass_, p_, volume_;
   std::vector<int> cell_;

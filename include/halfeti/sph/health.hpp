@@ -13,7 +13,7 @@ namespace halfeti::sph {
 struct HealthEvent {
   double time = 0.0;
   long step = 0;
-  std::string kind;  // "density_variation", "outside_tank", "spacing_collapse", "nan", "dt_floor"
+  std::string kind;  // "density_variation", "outside_tank", "spacing_collapse", "nan", "dt_floor", "spilled"
   std::string message;
   bool fatal = false;
 };
