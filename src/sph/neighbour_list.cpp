@@ -70,7 +70,10 @@ void NeighbourSearch::set_barriers(std::vector<Barrier> barriers) {
 }
 
 bool NeighbourSearch::crosses_barrier(double xi, double yi, double xj, double yj) const {
-  const int c = grid_.cell_of(xi, yi);
+  return crosses_barrier_from(grid_.cell_of(xi, yi), xi, yi, xj, yj);
+}
+
+bool NeighbourSearch::crosses_barrier_from(int c, double xi, double yi, double xj, double yj) const {
   for (int k = barrier_start_[c]; k < barrier_start_[c + 1]; ++k) {
     const Barrier& b = barriers_[barrier_items_[k]];
     if (segments_cross(xi, yi, xj, yj, b.xa, b.ya, b.xb, b.yb)) return true;
@@ -97,6 +100,8 @@ void NeighbourSearch::fluid_pairs(const double* x, const double* y, const std::i
   for (int i = 0; i < n_owned; ++i) {
     const int c = cell_of_[i], cx = c % grid_.nx, cy = c / grid_.nx;
     const double xi = x[i], yi = y[i];
+    // Only a cell that a barrier reaches needs the crossing test (most of the tank has none).
+    const bool near_barrier = barriers && barrier_start_[c + 1] > barrier_start_[c];
     const int x_lo = std::max(cx - 1, 0), x_hi = std::min(cx + 1, grid_.nx - 1);
     // Global cell order (rows ascending, and within a row the cells ascending), then global id inside a cell.
     for (int jy = std::max(cy - 1, 0); jy <= std::min(cy + 1, grid_.ny - 1); ++jy) {
@@ -106,7 +111,7 @@ void NeighbourSearch::fluid_pairs(const double* x, const double* y, const std::i
         if (r2 >= rc2) continue;
         const int j = cell_items_[k];
         if (j == i) continue;
-        if (barriers && crosses_barrier(xi, yi, x[j], y[j])) continue;
+        if (near_barrier && crosses_barrier_from(c, xi, yi, x[j], y[j])) continue;
         min_r2 = std::min(min_r2, r2);
         out.push(j, dx, dy, std::sqrt(r2), eval_);
       }

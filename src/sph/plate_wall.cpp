@@ -195,6 +195,20 @@ void PlateWall::set_outline(const PlateOutline& true_outline, double dx, double 
     }
   }
   row_start_.push_back(static_cast<int>(gx_.size()));
+  // Runs of 8 consecutive segments with their boxes, for the closest-point search.
+  run_start_.clear();
+  run_box_.clear();
+  for (int s0 = 0; s0 < n - 1; s0 += 8) {
+    const int s1 = std::min(s0 + 8, n - 1);
+    run_start_.push_back(s0);
+    double bx0 = o.x[s0], by0 = o.y[s0], bx1 = o.x[s0], by1 = o.y[s0];
+    for (int k = s0; k <= s1; ++k) {
+      bx0 = std::min(bx0, o.x[k]); bx1 = std::max(bx1, o.x[k]);
+      by0 = std::min(by0, o.y[k]); by1 = std::max(by1, o.y[k]);
+    }
+    run_box_.insert(run_box_.end(), {bx0, by0, bx1, by1});
+  }
+  run_start_.push_back(n - 1);
   dx_ = dx;
   row_window_ = static_cast<int>(std::ceil(support / dx)) + 1;
   // Segments a particle's support can reach on either side of its own (segments are at least `shortest` long).
@@ -231,7 +245,14 @@ void PlateWall::find_pairs(const double* x, const double* y, int n, const Kernel
     // the particle stands more clearly in front of (as the contact search).
     int best = -1;
     double best_d = std::numeric_limits<double>::max(), best_g = 0.0, best_eta = 0.0;
-    for (int s = 0; s < ns; ++s) {
+    for (std::size_t run = 0; run + 1 < run_start_.size(); ++run) {
+      // A run of segments whose box is farther than the best so far (or than the support) cannot hold the
+      // closest point: skipping it gives the full scan's answer, ties included.
+      const double bx = std::max({run_box_[4 * run] - xi, 0.0, xi - run_box_[4 * run + 2]});
+      const double by = std::max({run_box_[4 * run + 1] - yi, 0.0, yi - run_box_[4 * run + 3]});
+      const double box_d = std::hypot(bx, by);
+      if (box_d >= r || box_d > best_d) continue;
+    for (int s = run_start_[run]; s < run_start_[run + 1]; ++s) {
       const double dxs = o.x[s + 1] - o.x[s], dys = o.y[s + 1] - o.y[s], l2 = dxs * dxs + dys * dys;
       const double rx = xi - o.x[s], ry = yi - o.y[s];
       const double eta = std::clamp((rx * dxs + ry * dys) / l2, 0.0, 1.0);
@@ -243,6 +264,7 @@ void PlateWall::find_pairs(const double* x, const double* y, int n, const Kernel
         best_g = g;
         best_eta = eta;
       }
+    }
     }
     // Particles inside the plate (or on its surface) are the contact's (eqs. 19-23), not the wall's.
     if (best < 0 || best_d >= r || best_g <= 0.0) continue;

@@ -94,6 +94,7 @@ class NeighbourSearch {
 
  private:
   bool crosses_barrier(double xi, double yi, double xj, double yj) const;
+  bool crosses_barrier_from(int cell, double xi, double yi, double xj, double yj) const;  // cell of (xi, yi)
 
   parallel::CellGrid grid_;
   Kernel kernel_;
