@@ -48,8 +48,41 @@ std::vector<std::array<int, 4>> PlateMesh::linear_cells() const {
 
 namespace {
 
-// Q4 mesh: (cells_across + 1) x (cells_along + 1) nodes, the same named nodes, base, edges (2-node, middle -1)
-// and counterclockwise surface as the Q9 mesh.
+// The node grid both meshes share, nx x ny nodes (row by row from the clamped base), with its clamped base,
+// named nodes, edge sets (edges of `per_edge` nodes: 3 for Q9, 2 for Q4 with the middle -1) and the
+// counterclockwise surface: right face upwards, top leftwards, left face downwards.
+void lay_out_grid(const PlateGeometry& geo, int nx, int ny, int per_edge, PlateMesh& mesh) {
+  auto id = [nx](int i, int j) { return i + nx * j; };
+  mesh.cells_across = geo.cells_across;
+  mesh.cells_along = geo.cells_along;
+  mesh.nodes.resize(static_cast<std::size_t>(nx) * ny);
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      mesh.nodes[id(i, j)] = geo.base_centre + Eigen::Vector2d(geo.thickness * (double(i) / (nx - 1) - 0.5),
+                                                               geo.height * double(j) / (ny - 1));
+  for (int i = 0; i < nx; ++i) mesh.clamped_nodes.push_back(id(i, 0));
+  mesh.named_nodes = {
+      {"base_left", id(0, 0)},     {"base_centre", id(nx / 2, 0)},     {"base_right", id(nx - 1, 0)},
+      {"top_left", id(0, ny - 1)}, {"top_centre", id(nx / 2, ny - 1)}, {"top_right", id(nx - 1, ny - 1)}};
+  const int step = per_edge - 1;
+  auto edge = [&](int a, int mid, int b) { return std::array<int, 3>{a, per_edge == 3 ? mid : -1, b}; };
+  auto& left = mesh.edge_sets["left"];
+  auto& right = mesh.edge_sets["right"];
+  auto& top = mesh.edge_sets["top"];
+  for (int j = 0; j + step < ny; j += step) {
+    left.push_back(edge(id(0, j), id(0, j + 1), id(0, j + step)));
+    right.push_back(edge(id(nx - 1, j), id(nx - 1, j + 1), id(nx - 1, j + step)));
+  }
+  for (int i = 0; i + step < nx; i += step)
+    top.push_back(edge(id(i, ny - 1), id(i + 1, ny - 1), id(i + step, ny - 1)));
+  std::vector<int> path;
+  for (int j = 0; j < ny; ++j) path.push_back(id(nx - 1, j));
+  for (int i = nx - 2; i >= 0; --i) path.push_back(id(i, ny - 1));
+  for (int j = ny - 2; j >= 0; --j) path.push_back(id(0, j));
+  for (std::size_t k = 0; k + 1 < path.size(); ++k) mesh.surface.push_back({path[k], path[k + 1]});
+}
+
+// Q4 mesh: (cells_across + 1) x (cells_along + 1) nodes.
 PlateMesh make_q4_mesh(const PlateGeometry& geo) {
   if (geo.cells_across % 2 != 0)
     HALFETI_USER_ERROR("structure.cells_across = " << geo.cells_across
@@ -57,35 +90,12 @@ PlateMesh make_q4_mesh(const PlateGeometry& geo) {
                                                       "centres must be nodes)");
   PlateMesh mesh;
   mesh.element_type = ElementType::kQ4Eas;
-  mesh.cells_across = geo.cells_across;
-  mesh.cells_along = geo.cells_along;
   const int nx = geo.cells_across + 1, ny = geo.cells_along + 1;
+  lay_out_grid(geo, nx, ny, 2, mesh);
   auto id = [nx](int i, int j) { return i + nx * j; };
-  mesh.nodes.resize(static_cast<std::size_t>(nx) * ny);
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i)
-      mesh.nodes[id(i, j)] = geo.base_centre + Eigen::Vector2d(geo.thickness * (double(i) / (nx - 1) - 0.5),
-                                                               geo.height * double(j) / (ny - 1));
   for (int ey = 0; ey < geo.cells_along; ++ey)
     for (int ex = 0; ex < geo.cells_across; ++ex)
       mesh.quads.push_back({id(ex, ey), id(ex + 1, ey), id(ex, ey + 1), id(ex + 1, ey + 1)});
-  for (int i = 0; i < nx; ++i) mesh.clamped_nodes.push_back(id(i, 0));
-  mesh.named_nodes = {
-      {"base_left", id(0, 0)},     {"base_centre", id(nx / 2, 0)},     {"base_right", id(nx - 1, 0)},
-      {"top_left", id(0, ny - 1)}, {"top_centre", id(nx / 2, ny - 1)}, {"top_right", id(nx - 1, ny - 1)}};
-  auto& left = mesh.edge_sets["left"];
-  auto& right = mesh.edge_sets["right"];
-  auto& top = mesh.edge_sets["top"];
-  for (int j = 0; j + 1 < ny; ++j) {
-    left.push_back({id(0, j), -1, id(0, j + 1)});
-    right.push_back({id(nx - 1, j), -1, id(nx - 1, j + 1)});
-  }
-  for (int i = 0; i + 1 < nx; ++i) top.push_back({id(i, ny - 1), -1, id(i + 1, ny - 1)});
-  std::vector<int> path;
-  for (int j = 0; j < ny; ++j) path.push_back(id(nx - 1, j));
-  for (int i = nx - 2; i >= 0; --i) path.push_back(id(i, ny - 1));
-  for (int j = ny - 2; j >= 0; --j) path.push_back(id(0, j));
-  for (std::size_t k = 0; k + 1 < path.size(); ++k) mesh.surface.push_back({path[k], path[k + 1]});
   return mesh;
 }
 
@@ -100,15 +110,9 @@ PlateMesh make_plate_mesh(const PlateGeometry& geo) {
                                                        << geo.cells_along << " must be at least 1");
   if (geo.element == ElementType::kQ4Eas) return make_q4_mesh(geo);
   PlateMesh mesh;
-  mesh.cells_across = geo.cells_across;
-  mesh.cells_along = geo.cells_along;
   const int nx = 2 * geo.cells_across + 1, ny = 2 * geo.cells_along + 1;  // nodes per row / column
+  lay_out_grid(geo, nx, ny, 3, mesh);
   auto id = [nx](int i, int j) { return i + nx * j; };
-  mesh.nodes.resize(static_cast<std::size_t>(nx) * ny);
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i)
-      mesh.nodes[id(i, j)] = geo.base_centre + Eigen::Vector2d(geo.thickness * (double(i) / (nx - 1) - 0.5),
-                                                               geo.height * double(j) / (ny - 1));
   for (int ey = 0; ey < geo.cells_along; ++ey)
     for (int ex = 0; ex < geo.cells_across; ++ex) {
       std::array<int, 9> e;
@@ -116,26 +120,6 @@ PlateMesh make_plate_mesh(const PlateGeometry& geo) {
         for (int a = 0; a < 3; ++a) e[a + 3 * b] = id(2 * ex + a, 2 * ey + b);
       mesh.elements.push_back(e);
     }
-  for (int i = 0; i < nx; ++i) mesh.clamped_nodes.push_back(id(i, 0));
-  mesh.named_nodes = {
-      {"base_left", id(0, 0)},     {"base_centre", id(nx / 2, 0)},     {"base_right", id(nx - 1, 0)},
-      {"top_left", id(0, ny - 1)}, {"top_centre", id(nx / 2, ny - 1)}, {"top_right", id(nx - 1, ny - 1)}};
-
-  auto& left = mesh.edge_sets["left"];
-  auto& right = mesh.edge_sets["right"];
-  auto& top = mesh.edge_sets["top"];
-  for (int j = 0; j + 2 < ny; j += 2) {
-    left.push_back({id(0, j), id(0, j + 1), id(0, j + 2)});
-    right.push_back({id(nx - 1, j), id(nx - 1, j + 1), id(nx - 1, j + 2)});
-  }
-  for (int i = 0; i + 2 < nx; i += 2) top.push_back({id(i, ny - 1), id(i + 1, ny - 1), id(i + 2, ny - 1)});
-
-  // Counterclockwise surface: right face upwards, top leftwards, left face downwards.
-  std::vector<int> path;
-  for (int j = 0; j < ny; ++j) path.push_back(id(nx - 1, j));
-  for (int i = nx - 2; i >= 0; --i) path.push_back(id(i, ny - 1));
-  for (int j = ny - 2; j >= 0; --j) path.push_back(id(0, j));
-  for (std::size_t k = 0; k + 1 < path.size(); ++k) mesh.surface.push_back({path[k], path[k + 1]});
   return mesh;
 }
 
