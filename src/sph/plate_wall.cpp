@@ -230,7 +230,6 @@ void PlateWall::find_pairs(const double* x, const double* y, int n, const Kernel
   start_.push_back(0);
   if (empty()) return;
   const auto& o = outline_;
-  const int ns = static_cast<int>(o.size()) - 1;
   double x0 = o.x[0], x1 = o.x[0], y0 = o.y[0], y1 = o.y[0];
   for (std::size_t k = 0; k < o.size(); ++k) {
     x0 = std::min(x0, o.x[k]); x1 = std::max(x1, o.x[k]);
