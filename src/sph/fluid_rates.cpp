@@ -140,7 +140,8 @@ void continuity_rates(const ParticleView& pv, const PairList& pairs, const PairL
       div -= vj * f * (du * ex + dv * ey);
       if (use_delta) {
         // eqs. 3, 5: delta h c0 sum V_j psi_ij.grad_i W_ij, psi_ij = 2 (rho_j - rho_i) r_ji / r^2 - (grad^L_i + grad^L_j)
-        const double s = 2.0 * (pv.rho[j] - rhoi) / (ex * ex + ey * ey);
+        // (two particles at one point, which the contact's relocation can produce, have no direction: 0)
+        const double r2 = ex * ex + ey * ey, s = r2 > 0.0 ? 2.0 * (pv.rho[j] - rhoi) / r2 : 0.0;
         const double psx = s * ex - (gri_x + grad_rho[2 * j]), psy = s * ey - (gri_y + grad_rho[2 * j + 1]);
         diff -= vj * f * (psx * ex + psy * ey);
       }

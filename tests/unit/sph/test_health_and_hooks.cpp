@@ -77,6 +77,23 @@ TEST(Health, BlowUpIsReportedNotWritten) {
   EXPECT_TRUE(warned);
 }
 
+TEST(Hooks, TwoParticlesMovedOntoOnePointKeepFiniteRates) {
+  // The contact's relocation (eq. 22) can put two deep invaders on the same point of the surface; the delta term's
+  // r_ji / r^2 must not turn that into NaN. Each rank moves its second owned particle onto its first.
+  Fluid fluid(MPI_COMM_WORLD, small_tank(), nullptr);
+  fluid.compute_forces();
+  fluid.predict();
+  const std::size_t n = fluid.owned_count();
+  std::vector<double> dx(n, 0.0), dy(n, 0.0), dv(n, 0.0), drho(n, 0.0);
+  ASSERT_GE(n, 2u);
+  dx[1] = fluid.x()[0] - fluid.x()[1];
+  dy[1] = fluid.y()[0] - fluid.y()[1];
+  fluid.apply_corrections({1}, dx.data(), dy.data(), dv.data(), dv.data(), drho.data());
+  fluid.finish();
+  for (int s = 0; s < 3; ++s) fluid.step();
+  for (std::size_t i = 0; i < fluid.owned_count(); ++i) ASSERT_TRUE(std::isfinite(fluid.rho()[i])) << i;
+}
+
 TEST(Hooks, ExtraAccelerationActsOnTheChosenParticle) {
   const FluidParams p = small_tank();
   Fluid a(MPI_COMM_WORLD, p, nullptr), b(MPI_COMM_WORLD, p, nullptr);
