@@ -2,6 +2,7 @@
 #include "halfeti/sph/plate_wall.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -139,7 +140,7 @@ void PlateWall::set_outline(const PlateOutline& true_outline, double dx, double 
   const int n = static_cast<int>(o.size());
   if (n < 2) return;
   fibres_ = right_end_;
-  for (int k = 0; k <= fibres_; ++k) {  // the mid-line, as ContactCoupling::midline()
+  for (int k = 0; k <= fibres_; ++k) {  // the mid-line: the mean of the faces' paired points, base to top
     mid_x_.push_back(0.5 * (o.x[k] + o.x[n - 1 - k]));
     mid_y_.push_back(0.5 * (o.y[k] + o.y[n - 1 - k]));
   }
@@ -207,6 +208,9 @@ void PlateWall::set_outline(const PlateOutline& true_outline, double dx, double 
       by0 = std::min(by0, o.y[k]); by1 = std::max(by1, o.y[k]);
     }
     run_box_.insert(run_box_.end(), {bx0, by0, bx1, by1});
+    box_ = s0 == 0 ? std::array<double, 4>{bx0, by0, bx1, by1}
+                   : std::array<double, 4>{std::min(box_[0], bx0), std::min(box_[1], by0), std::max(box_[2], bx1),
+                                           std::max(box_[3], by1)};
   }
   run_start_.push_back(n - 1);
   dx_ = dx;
@@ -224,33 +228,20 @@ bool PlateWall::hidden(double xi, double yi, double xg, double yg, int fibre) co
   return false;
 }
 
-void PlateWall::find_pairs(const double* x, const double* y, int n, const Kernel& kernel) {
-  particle_.clear(); start_.clear(); ghost_.clear(); ex_.clear(); ey_.clear(); f_.clear();
-  nx_.clear(); ny_.clear(); eta_.clear(); seg_.clear();
-  start_.push_back(0);
-  if (empty()) return;
+void PlateWall::closest_point(double xi, double yi, double reach, int& best, double& best_d, double& best_g,
+                              double& best_eta) const {
+  // Closest point of the outline (eq. 20's projection, clamped); at a convex corner the tie goes to the face the
+  // particle stands more clearly in front of (as the contact search). Runs whose box is farther than the best so
+  // far (or than the reach) cannot hold it: skipping them gives the full scan's answer, ties included.
   const auto& o = outline_;
-  double x0 = o.x[0], x1 = o.x[0], y0 = o.y[0], y1 = o.y[0];
-  for (std::size_t k = 0; k < o.size(); ++k) {
-    x0 = std::min(x0, o.x[k]); x1 = std::max(x1, o.x[k]);
-    y0 = std::min(y0, o.y[k]); y1 = std::max(y1, o.y[k]);
-  }
-  const double r = support_, r2max = r * r;
-  const KernelEvaluator ke(kernel);
-  for (int i = 0; i < n; ++i) {
-    const double xi = x[i], yi = y[i];
-    if (xi < x0 - r || xi > x1 + r || yi < y0 - r || yi > y1 + r) continue;
-    // Closest point of the outline (eq. 20's projection, clamped); at a convex corner the tie goes to the face
-    // the particle stands more clearly in front of (as the contact search).
-    int best = -1;
-    double best_d = std::numeric_limits<double>::max(), best_g = 0.0, best_eta = 0.0;
-    for (std::size_t run = 0; run + 1 < run_start_.size(); ++run) {
-      // A run of segments whose box is farther than the best so far (or than the support) cannot hold the
-      // closest point: skipping it gives the full scan's answer, ties included.
-      const double bx = std::max({run_box_[4 * run] - xi, 0.0, xi - run_box_[4 * run + 2]});
-      const double by = std::max({run_box_[4 * run + 1] - yi, 0.0, yi - run_box_[4 * run + 3]});
-      const double box_d = std::hypot(bx, by);
-      if (box_d >= r || box_d > best_d) continue;
+  best = -1;
+  best_d = std::numeric_limits<double>::max();
+  best_g = best_eta = 0.0;
+  for (std::size_t run = 0; run + 1 < run_start_.size(); ++run) {
+    const double bx = std::max({run_box_[4 * run] - xi, 0.0, xi - run_box_[4 * run + 2]});
+    const double by = std::max({run_box_[4 * run + 1] - yi, 0.0, yi - run_box_[4 * run + 3]});
+    const double box_d = std::hypot(bx, by);
+    if (box_d >= reach || box_d > best_d) continue;
     for (int s = run_start_[run]; s < run_start_[run + 1]; ++s) {
       const double dxs = o.x[s + 1] - o.x[s], dys = o.y[s + 1] - o.y[s], l2 = dxs * dxs + dys * dys;
       const double rx = xi - o.x[s], ry = yi - o.y[s];
@@ -264,7 +255,33 @@ void PlateWall::find_pairs(const double* x, const double* y, int n, const Kernel
         best_eta = eta;
       }
     }
-    }
+  }
+}
+
+double PlateWall::normal_velocity(std::size_t a, const double* vx, const double* vy) const {
+  // (u_i - u_w) . n with the wall's velocity at the particle's closest point
+  const int i = particle_[a], s = seg_[a];
+  const double eta = eta_[a];
+  const double uwx = (1.0 - eta) * outline_.vx[s] + eta * outline_.vx[s + 1];
+  const double uwy = (1.0 - eta) * outline_.vy[s] + eta * outline_.vy[s + 1];
+  return (vx[i] - uwx) * nx_[a] + (vy[i] - uwy) * ny_[a];
+}
+
+void PlateWall::find_pairs(const double* x, const double* y, int n, const Kernel& kernel) {
+  particle_.clear(); start_.clear(); ghost_.clear(); ex_.clear(); ey_.clear(); f_.clear();
+  nx_.clear(); ny_.clear(); eta_.clear(); seg_.clear();
+  start_.push_back(0);
+  if (empty()) return;
+  const auto& o = outline_;
+  const double x0 = box_[0], y0 = box_[1], x1 = box_[2], y1 = box_[3];
+  const double r = support_, r2max = r * r;
+  const KernelEvaluator ke(kernel);
+  for (int i = 0; i < n; ++i) {
+    const double xi = x[i], yi = y[i];
+    if (xi < x0 - r || xi > x1 + r || yi < y0 - r || yi > y1 + r) continue;
+    int best;
+    double best_d, best_g, best_eta;
+    closest_point(xi, yi, r, best, best_d, best_g, best_eta);
     // Particles inside the plate (or on its surface) are the contact's (eqs. 19-23), not the wall's.
     if (best < 0 || best_d >= r || best_g <= 0.0) continue;
     // The wall normal at the particle: from its closest point to it (a face's normal in front of a face, radial
@@ -310,9 +327,7 @@ void PlateWall::momentum(const double* vx, const double* vy, const double* rho, 
     const double rhoi = rho[i], pi = p[i], inv_rhoi = 1.0 / rhoi, nx = nx_[a], ny = ny_[a], eta = eta_[a];
     // eq. 8 with the ghosts' velocity mirrored about the wall at the particle's closest point:
     // u_g - u_i = -2 ((u_i - u_w).n) n
-    const double uwx = (1.0 - eta) * outline_.vx[s] + eta * outline_.vx[s + 1];
-    const double uwy = (1.0 - eta) * outline_.vy[s] + eta * outline_.vy[s + 1];
-    const double un = (vx[i] - uwx) * nx + (vy[i] - uwy) * ny;
+    const double un = normal_velocity(a, vx, vy);
     double sx = 0.0, sy = 0.0;
     for (int q = start_[a]; q < start_[a + 1]; ++q) {
       const int g = ghost_[q];
@@ -339,11 +354,8 @@ void PlateWall::momentum(const double* vx, const double* vy, const double* rho, 
 
 void PlateWall::continuity(const double* vx, const double* vy, const double* rho, double* drho) const {
   for (std::size_t a = 0; a < particle_.size(); ++a) {
-    const int i = particle_[a], s = seg_[a];
-    const double nx = nx_[a], ny = ny_[a], eta = eta_[a];
-    const double uwx = (1.0 - eta) * outline_.vx[s] + eta * outline_.vx[s + 1];
-    const double uwy = (1.0 - eta) * outline_.vy[s] + eta * outline_.vy[s + 1];
-    const double un = (vx[i] - uwx) * nx + (vy[i] - uwy) * ny;
+    const int i = particle_[a];
+    const double nx = nx_[a], ny = ny_[a], un = normal_velocity(a, vx, vy);
     double d = 0.0;
     for (int q = start_[a]; q < start_[a + 1]; ++q) {
       const double n_dot_grad = -f_[q] * (nx * ex_[q] + ny * ey_[q]);

@@ -6,6 +6,7 @@
 // the result is independent of the rank count.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -88,6 +89,7 @@ class PlateWall {
   std::vector<double> mid_x_, mid_y_;    // mid-line points, base to top (fibres_ + 1)
   std::vector<int> run_start_;           // runs of 8 outline segments [run_start_[r], run_start_[r + 1])
   std::vector<double> run_box_;          // and their boxes (x0, y0, x1, y1)
+  std::array<double, 4> box_{};          // the outline's box (x0, y0, x1, y1)
   std::vector<double> arc_;              // per outline point: arc length from its face's top corner (0 on the top)
   // Ghosts, in rows of one lattice spacing from the top down: position, volume, region, the right face's segment
   // beside it; row_start_ indexes the rows.
@@ -100,6 +102,9 @@ class PlateWall {
   std::vector<PlateWallLoad> loads_;
 
   bool hidden(double xi, double yi, double xg, double yg, int fibre) const;
+  void closest_point(double xi, double yi, double reach, int& best, double& best_d, double& best_g,
+                     double& best_eta) const;
+  double normal_velocity(std::size_t a, const double* vx, const double* vy) const;
   void offset_outline(const PlateOutline& o, double dx);
 };
 
