@@ -61,6 +61,8 @@ const Case kCases[] = {
      "bad.yaml:3:61: cables[0].area: expected a number > 0 (m^2), found '0'"},
     {"layer outside eq. 23's range", "scene: {name: s, end_time: 1}\ncoupling: {ssosd: {layer_ratio: 60}}\n",
      "bad.yaml:2:33: coupling.ssosd.layer_ratio: expected a number in [5, 50], found '60'"},
+    {"unknown plate-water exchange", "scene: {name: s, end_time: 1}\ncoupling: {plate_wall_exchange: implicit}\n",
+     "bad.yaml:2:33: coupling.plate_wall_exchange: expected one of extrapolated, lagged, found 'implicit'"},
     {"broken YAML", "scene: {name: s, end_time: 1\n", "bad.yaml:2:1: not valid YAML: end of map flow not found"},
     {"not a mapping", "- a\n- b\n",
      "bad.yaml: a scene is a YAML mapping of sections (scene:, fluid:, ...), found something else"},
