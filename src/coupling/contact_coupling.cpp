@@ -86,8 +86,13 @@ void ContactCoupling::set_fluid_loads(const std::vector<sph::PlateWallLoad>& loc
       return all[4 * a] != all[4 * b] ? all[4 * a] < all[4 * b] : all[4 * a + 1] < all[4 * b + 1];
     });
     std::vector<Eigen::Vector2d> load(loads_.size(), Eigen::Vector2d::Zero());
-    for (int k : order)  // gid order: a fixed summation order on any number of ranks
-      load[static_cast<std::size_t>(all[4 * k + 1])] += Eigen::Vector2d(all[4 * k + 2], all[4 * k + 3]);
+    for (int k : order) {  // gid order: a fixed summation order on any number of ranks
+      const double point = all[4 * k + 1];
+      HALFETI_CHECK(point >= 0.0 && point < static_cast<double>(load.size()),
+                    "plate-wall load of particle " << all[4 * k] << " on outline point " << point << " of "
+                                                   << load.size());
+      load[static_cast<std::size_t>(point)] += Eigen::Vector2d(all[4 * k + 2], all[4 * k + 3]);
+    }
     for (std::size_t k = 0; k < loads_.size(); ++k) {
       auto& l = *loads_[k];
       // The plate's trapezoidal step wants the load at mid-step; the water's is from the step's start.

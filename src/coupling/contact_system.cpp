@@ -149,8 +149,9 @@ std::pair<double, double> ContactSystem::assemble(const std::vector<ContactInvad
     for (int k = 0; k < rows_per_; ++k) HALFETI_PETSC_CALL(MatSetValue(a, mult[k], mult[k], 0.0, ADD_VALUES));
     // Right-hand side: contact forces A^T lambda on plate and particle, the particle's inertia, the overlap
     // c.
-    HALFETI_PETSC_CALL(VecSetValues(rhs, 6, q, lc.rhs.data(), ADD_VALUES));
-    HALFETI_PETSC_CALL(VecSetValues(rhs, rows_per_, mult, terms.value.data(), ADD_VALUES));
+    structure::add_to_vector(rhs, 6, q, lc.rhs.data(), "contact: rows of an invader and its segment");
+    structure::add_to_vector(rhs, rows_per_, mult, terms.value.data(),
+                             "contact: an invader's multiplier rows");
   }
   HALFETI_PETSC_CALL(MatAssemblyBegin(a, MAT_FINAL_ASSEMBLY));
   HALFETI_PETSC_CALL(MatAssemblyEnd(a, MAT_FINAL_ASSEMBLY));

@@ -26,6 +26,15 @@ std::string ksp_failure(KSP ksp, KSPConvergedReason reason) {
   return text;
 }
 
+void add_to_vector(Vec v, int n, const PetscInt* rows, const PetscScalar* values, const char* what) {
+  PetscInt size = 0;
+  HALFETI_PETSC_CALL(VecGetSize(v, &size));
+  for (int k = 0; k < n; ++k) {
+    HALFETI_CHECK(rows[k] >= -1 && rows[k] < size, what << ": row " << rows[k] << " of a vector of " << size);
+    if (rows[k] >= 0) HALFETI_PETSC_CALL(VecSetValues(v, 1, rows + k, values + k, ADD_VALUES));
+  }
+}
+
 }  // namespace halfeti::structure
 
 namespace halfeti::structure::detail {

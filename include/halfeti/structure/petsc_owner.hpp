@@ -31,6 +31,12 @@ namespace detail {
 KSPConvergedReason solve_with(KSP ksp, Mat matrix, Vec rhs, Vec solution);
 std::string ksp_failure(KSP ksp, KSPConvergedReason reason);
 
+// ADD_VALUES of values[k] at rows[k] of v, skipping rows -1 (clamped dofs), as MatSetValues does.
+// VecSetValues itself skips them only on a vector with VEC_IGNORE_NEGATIVE_INDICES; otherwise an optimised
+// PETSc adds to v[-1], before the vector's array. A row below -1 or past the vector's size is an internal
+// error naming `what`.
+void add_to_vector(Vec v, int n, const PetscInt* rows, const PetscScalar* values, const char* what);
+
 // Owns one PETSc handle (Mat, Vec, KSP, ...). Destroy is PETSc's XDestroy; it runs only while PETSc is alive.
 template <typename Handle, PetscErrorCode (*Destroy)(Handle*)>
 class PetscOwner {
