@@ -80,6 +80,13 @@ std::shared_ptr<const Schema> coupling_schema() {
                        "extrapolated to mid-step, second order) or lagged (as computed at the step's start)",
                        {"extrapolated", "lagged"})
                .def("extrapolated"));
+    s->add(Key::real("added_mass_layer",
+                     "depth of the water layer, in particle spacings, whose mass the plate's faces carry implicitly "
+                     "in the plate's step against a change of velocity (stabilises the explicit plate-water "
+                     "exchange); 0: fully explicit",
+                     "dx")
+               .def(0.25)
+               .in(0.0, 4.0));
     s->add(Key::section("ssosd", "the intermediate layer", ssosd_schema()).always());
     s->add(Key::real("inside_tolerance", "depth past the surface at which a particle left inside stops the run",
                      "m")
@@ -100,6 +107,7 @@ coupling::CouplingParameters coupling_params(const scene::Node& root) {
   p.plate_wall = c.boolean("plate_wall");
   p.plate_wall_velocity = c.boolean("plate_wall_velocity");
   p.plate_wall_extrapolated = c.string("plate_wall_exchange") == "extrapolated";
+  p.added_mass_layer = c.real("added_mass_layer");
   p.mass_participation = c.string("mass_participation") == "kick_drift" ? 1.0 : 2.0;
   const scene::Node s = c.section("ssosd");
   p.ssosd.enabled = s.boolean("enabled");

@@ -190,7 +190,10 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
     plate_checkpoints_ = std::make_unique<io::FieldSeries>(comm_, out_dir_ + "/checkpoints", "plate_state");
   }
   if (parts_.coupling_params) {
-    parts_.coupling = std::make_unique<coupling::ContactCoupling>(comm_, parts_.plate.get(), *parts_.coupling_params);
+    auto& cp = *parts_.coupling_params;
+    const auto& fluid = *parts_.fluid;
+    cp.added_mass = cp.added_mass_layer * fluid.params().density * fluid.params().spacing;
+    parts_.coupling = std::make_unique<coupling::ContactCoupling>(comm_, parts_.plate.get(), cp);
     if (parts_.coupling_params->plate_wall) {
       parts_.fluid->set_plate_offsets(parts_.plate_offsets);
       parts_.fluid->set_plate_outline(parts_.coupling->plate_outline());  // and its mid-line as the barrier

@@ -20,6 +20,17 @@ void validate(const CouplingParameters& p) {
     HALFETI_USER_ERROR("coupling.inside_tolerance = " << p.inside_tolerance << " m must be > 0");
 }
 
+void SurfacePointLoad::start_step(const Eigen::Vector2d& load, const Eigen::Vector2d& place,
+                                  const Eigen::Matrix2d& added_mass, bool extrapolate) {
+  added_mass_ = added_mass;
+  rest_ = has_previous_ ? Eigen::Vector2d(2.0 * place - place_) : place;
+  // The plate's trapezoidal step wants the load at mid-step; the water's is from the step's start.
+  force_ = extrapolate && has_previous_ ? Eigen::Vector2d(1.5 * load - 0.5 * previous_) : load;
+  previous_ = load;
+  place_ = place;
+  has_previous_ = true;
+}
+
 ContactCoupling::ContactCoupling(MPI_Comm world, structure::PlateSolver* solver,
                                  const CouplingParameters& params, int root)
     : comm_(world), root_(root), solver_(solver), params_(params) {
@@ -36,8 +47,7 @@ ContactCoupling::ContactCoupling(MPI_Comm world, structure::PlateSolver* solver,
   if (surface_.points.size() >= 2) thickness_ = (surface_.points.front() - surface_.points.back()).norm();
   if (solver_ != nullptr) {
     for (int node : surface_.nodes) {
-      loads_.push_back(std::make_unique<PointLoad>());
-      loads_.back()->node = node;
+      loads_.push_back(std::make_unique<SurfacePointLoad>(node));
       solver_->add_nodal_element(loads_.back().get());
     }
   }
@@ -93,13 +103,20 @@ void ContactCoupling::set_fluid_loads(const std::vector<sph::PlateWallLoad>& loc
                                                    << load.size());
       load[static_cast<std::size_t>(point)] += Eigen::Vector2d(all[4 * k + 2], all[4 * k + 3]);
     }
+    const auto& pts = surface_.points;
+    const std::size_t last = pts.size() - 1;
     for (std::size_t k = 0; k < loads_.size(); ++k) {
       auto& l = *loads_[k];
-      // The plate's trapezoidal step wants the load at mid-step; the water's is from the step's start.
-      const bool extrapolate = params_.plate_wall_extrapolated && l.has_previous;
-      l.force = extrapolate ? Eigen::Vector2d(1.5 * load[k] - 0.5 * l.previous) : load[k];
-      l.previous = load[k];
-      l.has_previous = true;
+      // The interface added mass on this point (section 13): normal from its neighbours (radial at a corner), half
+      // of each neighbouring segment's length. The polyline's ends are the clamped base corners.
+      Eigen::Matrix2d added_mass = Eigen::Matrix2d::Zero();
+      if (k > 0 && k < last && params_.added_mass > 0.0) {
+        const Eigen::Vector2d t = pts[k + 1] - pts[k - 1];
+        const Eigen::Vector2d n = Eigen::Vector2d(t.y(), -t.x()).normalized();
+        const double length = 0.5 * ((pts[k] - pts[k - 1]).norm() + (pts[k + 1] - pts[k]).norm());
+        added_mass = params_.added_mass * length * n * n.transpose();
+      }
+      l.start_step(load[k], pts[k], added_mass, params_.plate_wall_extrapolated);
       sum[0] += load[k].x();
       sum[1] += load[k].y();
     }
@@ -157,6 +174,7 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
   const double when = t + dt;
   std::vector<InvaderCorrection> corrections(gathered.size());
   last_solve_ = ContactSolveReport{};
+  for (auto& l : loads_) l->set_time_step(dt);  // section 13
   if (gathered.empty()) {
     solver_->step(t, dt);  // nothing touches the plate: its own Newton loop
     last_.newton_iterations = solver_->last_step().newton_iterations;

@@ -297,12 +297,31 @@ void Fluid::apply_corrections(const std::vector<int>& touched, const double* dx,
                               const double* dvx, const double* dvy, const double* drho) {
   HALFETI_CHECK(predicted_, "Fluid::apply_corrections() belongs between predict() and finish()");
   ScopedTimer t(timers_, "integrate");
+  // The tank's walls bound a correction. The contact solve knows only the plate, and at the plate's foot the face's
+  // normal tilts towards the floor as the plate bends: a particle pushed out of the plate there would be pushed
+  // into the floor. So a correction may not bring a particle closer to a wall than the nearer of its predicted
+  // distance and the wall repulsion's range (dx/2); where it is held, the velocity correction into that wall is
+  // dropped.
+  const double keep = 0.5 * dx_, L = params_.tank_length;
   for (int i : touched) {
     HALFETI_DEBUG_CHECK(i >= 0 && i < n_owned_, "correction for particle " << i << " of " << n_owned_);
-    x_[i] += dx[i];
-    y_[i] += dy[i];
-    vx_[i] += dvx[i];
-    vy_[i] += dvy[i];
+    double nx = x_[i] + dx[i], ny = y_[i] + dy[i], ux = dvx[i], uy = dvy[i];
+    if (const double low = std::min(y_[i], keep); ny < low) {
+      ny = low;
+      uy = std::max(uy, 0.0);
+    }
+    if (const double low = std::min(x_[i], keep); nx < low) {
+      nx = low;
+      ux = std::max(ux, 0.0);
+    }
+    if (const double high = L - std::min(L - x_[i], keep); nx > high) {
+      nx = high;
+      ux = std::min(ux, 0.0);
+    }
+    x_[i] = nx;
+    y_[i] = ny;
+    vx_[i] += ux;
+    vy_[i] += uy;
     rho_[i] += drho[i];  // eq. 24 for the density; the pressure follows from eq. 9
   }
 }

@@ -59,6 +59,11 @@ struct CouplingParameters {
   // mid-step, 1.5 F_n - 0.5 F_n-1, and the water the face's velocity extrapolated to mid-step, 2 v_n-1/2 - v_n-3/2
   // (second order in the lag of the explicit exchange); lagged: F_n and v_n-1/2 (docs/coupling.md, section 12).
   bool plate_wall_extrapolated = true;
+  // scene: coupling.added_mass_layer: depth, in particle spacings, of the water layer whose mass the plate's faces
+  // carry in the plate's step, normal to the face, on the step's change of velocity (docs/coupling.md, section 13);
+  // 0 = the plate-water exchange fully explicit.
+  double added_mass_layer = 0.25;
+  double added_mass = 0.0;  // kg/m^2 per face area: rho0 * added_mass_layer * dx, set by the application
   SsosdParameters ssosd;   // scene: coupling.ssosd.{enabled,layer_ratio,velocity_floor}
   double inside_tolerance = 1e-9;  // m, > 0: an invader ending deeper than this past the surface is an error
   std::string options_prefix = "structure_contact_";  // PETSc options prefix of the contact KSP
@@ -75,6 +80,39 @@ struct CouplingStepReport {
          force_y = 0.0;    // N/m, total contact force on the particles (the plate gets the opposite)
   double max_force = 0.0;  // N/m, largest |C| of one invader
   int released = 0;        // invaders released by the unilateral active set (they keep their predicted state)
+};
+
+// The water's plate-wall force on one surface point over a step, as a nodal element of the plate: a dead load plus
+// the interface added mass M_a = m_a n n^T (docs/coupling.md, section 13), carried as a spring K = M_a / dt^2 about
+// the place the point would reach at its last step's velocity, x_n + (x_n - x_n-1). The force is then
+// -M_a (x - 2 x_n + x_n-1) / dt^2, minus the added mass times the point's acceleration over the step: smooth motion
+// meets the water's load alone and a sudden change of velocity meets the layer's inertia within the plate's
+// implicit step, not one step later through the water.
+class SurfacePointLoad : public NodalElement {
+ public:
+  explicit SurfacePointLoad(int node) : node_(node) {}
+  // At the start of a step: the water's load on the point from the step's start (N/m), the point's place then, its
+  // added mass (kg/m, m_a n n^T times its share of the face). extrapolate: the load used is 1.5 F_n - 0.5 F_n-1
+  // (mid-step, once a previous load exists), else F_n.
+  void start_step(const Eigen::Vector2d& load, const Eigen::Vector2d& place, const Eigen::Matrix2d& added_mass,
+                  bool extrapolate);
+  void set_time_step(double dt) { stiffness_ = added_mass_ / (dt * dt); }
+  const Eigen::Vector2d& force() const { return force_; }
+  std::vector<int> nodes() const override { return {node_}; }
+  void evaluate(const std::vector<Eigen::Vector2d>& x, Eigen::VectorXd& f, Eigen::MatrixXd& k) override {
+    f = stiffness_ * (x[0] - rest_) - force_;  // external: enters the residual with the sign opposite to F_int
+    k = stiffness_;
+  }
+
+ private:
+  int node_;
+  Eigen::Vector2d force_ = Eigen::Vector2d::Zero();
+  Eigen::Matrix2d added_mass_ = Eigen::Matrix2d::Zero();
+  Eigen::Matrix2d stiffness_ = Eigen::Matrix2d::Zero();
+  Eigen::Vector2d rest_ = Eigen::Vector2d::Zero();      // the spring's rest place
+  Eigen::Vector2d previous_ = Eigen::Vector2d::Zero();  // the water's load of the step before
+  Eigen::Vector2d place_ = Eigen::Vector2d::Zero();     // the point's place at the start of the step before
+  bool has_previous_ = false;
 };
 
 class ContactCoupling {
@@ -113,22 +151,9 @@ class ContactCoupling {
   std::vector<InvaderCorrection> solve_on_root(double t, double dt, double layer,
                                                const std::vector<Invader>& inv);
 
-  // A dead load on one surface node (the water's plate-wall force of the step), as a nodal element.
-  struct PointLoad : NodalElement {
-    int node = 0;
-    Eigen::Vector2d force = Eigen::Vector2d::Zero();
-    Eigen::Vector2d previous = Eigen::Vector2d::Zero();  // the water's load of the step before
-    bool has_previous = false;
-    std::vector<int> nodes() const override { return {node}; }
-    void evaluate(const std::vector<Eigen::Vector2d>&, Eigen::VectorXd& f, Eigen::MatrixXd& k) override {
-      f = -force;  // external: enters the residual with the opposite sign of an internal force
-      k = Eigen::MatrixXd::Zero(2, 2);
-    }
-  };
-
   Communicator comm_;
   int rank_ = 0, root_ = 0;
-  std::vector<std::unique_ptr<PointLoad>> loads_;  // root: one per surface point (clamped ones ignored)
+  std::vector<std::unique_ptr<SurfacePointLoad>> loads_;  // root: one per surface point (clamped ones ignored)
   double fluid_load_[2] = {0.0, 0.0};
   std::vector<double> surface_motion_;             // every rank: vx, vy, ax, ay per surface point
   std::vector<double> mean_velocity_;              // every rank: vx, vy per surface point over the last step

@@ -2,6 +2,7 @@
 // (eq. 4) acts on exactly the particles it is set for.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -92,6 +93,40 @@ TEST(Hooks, TwoParticlesMovedOntoOnePointKeepFiniteRates) {
   fluid.finish();
   for (int s = 0; s < 3; ++s) fluid.step();
   for (std::size_t i = 0; i < fluid.owned_count(); ++i) ASSERT_TRUE(std::isfinite(fluid.rho()[i])) << i;
+}
+
+TEST(Hooks, CorrectionsDoNotPushParticlesIntoTheTankWalls) {
+  // A correction that would carry a particle through the floor or a side wall (the contact at the plate's foot)
+  // stops at the nearer of its predicted distance and dx/2; its velocity correction into that wall is dropped,
+  // a correction along the wall is kept. A correction inside the tank is applied as given.
+  const FluidParams p = small_tank();
+  Fluid fluid(MPI_COMM_WORLD, p, nullptr);
+  fluid.compute_forces();
+  fluid.predict();
+  const std::size_t n = fluid.owned_count();
+  ASSERT_GE(n, 3u);
+  std::vector<double> dx(n, 0.0), dy(n, 0.0), dvx(n, 0.0), dvy(n, 0.0), drho(n, 0.0);
+  const double x0 = fluid.x()[0], y0 = fluid.y()[0], x1 = fluid.x()[1], y2 = fluid.y()[2];
+  const double vx0 = fluid.vx()[0], vy0 = fluid.vy()[0], vx1 = fluid.vx()[1], vy2 = fluid.vy()[2];
+  dy[0] = -(y0 + 0.01);  // through the floor
+  const double along = x0 < 0.5 * p.tank_length ? 1e-4 : -1e-4;  // along the floor, towards the middle
+  dx[0] = along;
+  dvx[0] = 0.3;
+  dvy[0] = -2.0;
+  dx[1] = p.tank_length - x1 + 0.01;  // through the right wall
+  dvx[1] = 1.0;
+  dy[2] = 1e-4;  // inside
+  dvy[2] = 0.5;
+  fluid.apply_corrections({0, 1, 2}, dx.data(), dy.data(), dvx.data(), dvy.data(), drho.data());
+  EXPECT_DOUBLE_EQ(fluid.y()[0], std::min(y0, 0.5 * p.spacing));
+  EXPECT_DOUBLE_EQ(fluid.x()[0], x0 + along);
+  EXPECT_DOUBLE_EQ(fluid.vy()[0], vy0);
+  EXPECT_DOUBLE_EQ(fluid.vx()[0], vx0 + 0.3);
+  EXPECT_DOUBLE_EQ(fluid.x()[1], p.tank_length - std::min(p.tank_length - x1, 0.5 * p.spacing));
+  EXPECT_DOUBLE_EQ(fluid.vx()[1], vx1);
+  EXPECT_DOUBLE_EQ(fluid.y()[2], y2 + 1e-4);
+  EXPECT_DOUBLE_EQ(fluid.vy()[2], vy2 + 0.5);
+  fluid.finish();
 }
 
 TEST(Hooks, ExtraAccelerationActsOnTheChosenParticle) {
