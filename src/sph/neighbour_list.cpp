@@ -6,6 +6,15 @@
 namespace halfeti::sph {
 
 namespace {
+// Squared distance from a point to a barrier segment.
+double point_segment_distance2(double px, double py, const Barrier& b) {
+  const double ex = b.xb - b.xa, ey = b.yb - b.ya, len2 = ex * ex + ey * ey;
+  double s = len2 > 0.0 ? ((px - b.xa) * ex + (py - b.ya) * ey) / len2 : 0.0;
+  s = std::clamp(s, 0.0, 1.0);
+  const double dx = px - (b.xa + s * ex), dy = py - (b.ya + s * ey);
+  return dx * dx + dy * dy;
+}
+
 // Counting sort of items by cell; inside a cell, by key (global id / wall index).
 template <class Key>
 void bin(const parallel::CellGrid& g, const double* x, const double* y, int n, Key key, std::vector<int>& start,
@@ -69,6 +78,14 @@ void NeighbourSearch::set_barriers(std::vector<Barrier> barriers) {
     for_cells(barriers_[k], [&](int c) { barrier_items_[fill[c]++] = k; });
 }
 
+bool NeighbourSearch::crosses_any(const std::vector<int>& which, double xi, double yi, double xj, double yj) const {
+  for (int k : which) {
+    const Barrier& b = barriers_[k];
+    if (segments_cross(xi, yi, xj, yj, b.xa, b.ya, b.xb, b.yb)) return true;
+  }
+  return false;
+}
+
 bool NeighbourSearch::crosses_barrier(double xi, double yi, double xj, double yj) const {
   return crosses_barrier_from(grid_.cell_of(xi, yi), xi, yi, xj, yj);
 }
@@ -100,8 +117,16 @@ void NeighbourSearch::fluid_pairs(const double* x, const double* y, const std::i
   for (int i = 0; i < n_owned; ++i) {
     const int c = cell_of_[i], cx = c % grid_.nx, cy = c / grid_.nx;
     const double xi = x[i], yi = y[i];
-    // Only a cell that a barrier reaches needs the crossing test (most of the tank has none).
-    const bool near_barrier = barriers && barrier_start_[c + 1] > barrier_start_[c];
+    // Only a barrier within the support of particle i can cross a pair of it (the crossing point lies on the pair,
+    // closer to i than the pair's length): those of its cell's list, found once per particle (most of the tank
+    // has none). The 1e-9 margin keeps every barrier a rounded crossing test could see.
+    near_barriers_.clear();
+    if (barriers)
+      for (int k = barrier_start_[c]; k < barrier_start_[c + 1]; ++k) {
+        const Barrier& b = barriers_[barrier_items_[k]];
+        if (point_segment_distance2(xi, yi, b) < rc2 * (1.0 + 1e-9)) near_barriers_.push_back(barrier_items_[k]);
+      }
+    const bool near_barrier = !near_barriers_.empty();
     const int x_lo = std::max(cx - 1, 0), x_hi = std::min(cx + 1, grid_.nx - 1);
     // Global cell order (rows ascending, and within a row the cells ascending), then global id inside a cell.
     for (int jy = std::max(cy - 1, 0); jy <= std::min(cy + 1, grid_.ny - 1); ++jy) {
@@ -111,7 +136,7 @@ void NeighbourSearch::fluid_pairs(const double* x, const double* y, const std::i
         if (r2 >= rc2) continue;
         const int j = cell_items_[k];
         if (j == i) continue;
-        if (near_barrier && crosses_barrier_from(c, xi, yi, x[j], y[j])) continue;
+        if (near_barrier && crosses_any(near_barriers_, xi, yi, x[j], y[j])) continue;
         min_r2 = std::min(min_r2, r2);
         out.push(j, dx, dy, std::sqrt(r2), eval_);
       }

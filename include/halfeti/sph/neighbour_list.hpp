@@ -95,6 +95,7 @@ class NeighbourSearch {
  private:
   bool crosses_barrier(double xi, double yi, double xj, double yj) const;
   bool crosses_barrier_from(int cell, double xi, double yi, double xj, double yj) const;  // cell of (xi, yi)
+  bool crosses_any(const std::vector<int>& which, double xi, double yi, double xj, double yj) const;
 
   parallel::CellGrid grid_;
   Kernel kernel_;
@@ -109,6 +110,7 @@ class NeighbourSearch {
   };
   FixedBins fixed_[2];
   std::vector<int> barrier_start_, barrier_items_;  // per cell: indices into barriers_ (CSR)
+  std::vector<int> near_barriers_;  // scratch of fluid_pairs: the barriers within the support of one particle
   std::vector<Barrier> barriers_;
   double min_distance_ = 0.0;
 };
