@@ -122,7 +122,7 @@ Registry<ProbeFactory> build_registry() {
   r.add("max_density_variation", "max |rho - rho0| / rho0 over the water [-]", keys({}),
         fluid_probe([](const sph::Fluid& f) { return f.max_density_variation(); }));
   r.add("displacement", "displacement of a named plate node [m]",
-        keys({Key::string("node", "top_left, top_centre, top_right, ...").required(),
+        keys({Key::string("node", "top_left, top_centre, top_right, ... (hanging plate: bottom_left, bottom_centre, ...)").required(),
               Key::choice("component", "which component", {"x", "y"}).required()}),
         [](const scene::Node& p, Parts& parts) {
           const auto& s = parts.require_structure(p.path());

@@ -43,9 +43,28 @@ const Registry<structure::ElementType>& element_registry() {
   return r;
 }
 
+const Registry<structure::Orientation>& orientation_registry() {
+  static const auto r = named_values<structure::Orientation>({
+      {"standing", "clamped at its base, free end up (default; the paper's plate)", structure::Orientation::kStanding},
+      {"hanging",
+       "clamped at its top, free end down (a gate): the standing plate turned by 180 degrees about `base`, the "
+       "clamp's centre; free-end nodes bottom_left, bottom_centre, bottom_right, clamp nodes clamp_left, "
+       "clamp_centre, clamp_right",
+       structure::Orientation::kHanging},
+  });
+  return r;
+}
+
+// The plate's named nodes, for error messages.
+std::string node_names(const structure::PlateMesh& mesh) {
+  std::string out;
+  for (const auto& [name, id] : mesh.named_nodes) out += (out.empty() ? "" : ", ") + name;
+  return out;
+}
+
 std::shared_ptr<Schema> load_schema() {
   auto s = std::make_shared<Schema>("A dead point load on a named node (tests and static cases).");
-  s->add(Key::string("node", "named node: top_left, top_centre, top_right, base_left, ...").required());
+  s->add(Key::string("node", "named node: top_left, top_centre, top_right, base_left, ... (hanging: bottom_centre, clamp_left, ...)").required());
   s->add(Key::point("force", "force per unit depth", "N/m").required());
   return s;
 }
@@ -56,9 +75,10 @@ std::shared_ptr<const Schema> structure_schema() {
   static const std::shared_ptr<const Schema> schema = [] {
     auto s = std::make_shared<Schema>(
         "The rubber plate: a 2D large-deformation solid of Q9 (or Q4 enhanced-strain) elements, clamped at its "
-        "base, per unit depth.");
-    s->add(Key::point("base", "centre of the clamped base", "m").required());
-    s->add(Key::real("height", "plate height", "m").def(0.08).positive().at_most(100.0));
+        "base (or, hanging, at its top), per unit depth.");
+    s->add(Key::point("base", "centre of the clamped base (hanging: of the clamped top)", "m").required());
+    s->add(Key::choice("orientation", "which end is clamped", orientation_registry().names()).def("standing"));
+    s->add(Key::real("height", "plate height (length from the clamp to the free end)", "m").def(0.08).positive().at_most(100.0));
     s->add(Key::real("thickness", "plate thickness", "m").def(0.003).positive().at_most(100.0));
     s->add(Key::integer("cells_across", "cells (elements) through the thickness").def(2).in(1, 64));
     s->add(Key::integer("cells_along", "cells (elements) along the height (2 x 60 is the paper's 120)").def(60).in(1, 4096));
@@ -98,7 +118,7 @@ std::shared_ptr<const Schema> cable_schema() {
         "unstretched_length and initial_stress. The water does not act on cables (as in the paper).");
     s->add(Key::string("name", "name used by probes").required());
     s->add(Key::point("anchor", "fixed end on a tank wall", "m").required());
-    s->add(Key::string("node", "plate node it holds: top_left, top_centre, top_right, ...").required());
+    s->add(Key::string("node", "plate node it holds: top_left, top_centre, top_right, ... (hanging: bottom_left, ...)").required());
     s->add(Key::integer("count", "real cables across the tank's width").def(1).in(1, 100000));
     s->add(Key::real("area", "cross-section of one cable", "m^2").required().positive());
     s->add(Key::real("modulus", "Young's modulus of the cable", "Pa").required().positive());
@@ -122,6 +142,7 @@ StructureSetup structure_setup(const scene::Node& root) {
   p.geometry.cells_across = static_cast<int>(s.integer("cells_across"));
   p.geometry.cells_along = static_cast<int>(s.integer("cells_along"));
   p.geometry.element = element_registry().get(s.string("element")).make;
+  p.geometry.orientation = orientation_registry().get(s.string("orientation")).make;
   p.material.model = material_registry().get(s.string("material")).make;
   p.material.youngs_modulus = s.real("youngs_modulus");
   p.material.poisson_ratio = s.real("poisson_ratio");
@@ -135,8 +156,10 @@ StructureSetup structure_setup(const scene::Node& root) {
   if (root.has("tank")) {
     const scene::Node tank = root.section("tank");
     const double half = 0.5 * p.geometry.thickness;
-    if (base[0] - half < 0 || base[0] + half > tank.real("length") || base[1] < 0 ||
-        base[1] + p.geometry.height > tank.real("height"))
+    const bool hanging = p.geometry.orientation == structure::Orientation::kHanging;
+    const double lowest = hanging ? base[1] - p.geometry.height : base[1];
+    if (base[0] - half < 0 || base[0] + half > tank.real("length") || lowest < 0 ||
+        lowest + p.geometry.height > tank.real("height"))
       HALFETI_USER_ERROR(s.path() << ": the plate (base [" << base[0] << ", " << base[1] << "], "
                                   << p.geometry.thickness << " x " << p.geometry.height
                                   << " m) does not fit in the tank");
@@ -164,8 +187,8 @@ StructureSetup structure_setup(const scene::Node& root) {
   for (const auto& l : s.list("loads")) {
     const std::string node = l.string("node");
     if (!names_only.named_nodes.count(node))
-      HALFETI_USER_ERROR(l.key_path("node") << ": no node named '" << node << "' (the plate has top_left, "
-                                            << "top_centre, top_right, base_left, base_centre, base_right)");
+      HALFETI_USER_ERROR(l.key_path("node") << ": no node named '" << node << "' (the plate has "
+                                            << node_names(names_only) << ")");
     const auto f = l.point("force");
     out.point_loads.push_back({node, {f[0], f[1]}});
   }
@@ -190,8 +213,8 @@ std::vector<CableSetup> cable_setups(const scene::Node& root, const StructureSet
     cs.node = c.string("node");
     const auto it = mesh.named_nodes.find(cs.node);
     if (it == mesh.named_nodes.end())
-      HALFETI_USER_ERROR(c.key_path("node") << ": no plate node named '" << cs.node
-                                            << "' (top_left, top_centre, top_right, base_left, base_centre, base_right)");
+      HALFETI_USER_ERROR(c.key_path("node") << ": no plate node named '" << cs.node << "' ("
+                                            << node_names(mesh) << ")");
     cs.set.count = static_cast<int>(c.integer("count"));
     cs.set.area = c.real("area");
     cs.set.modulus = c.real("modulus");

@@ -26,6 +26,16 @@ std::string to_string(ElementType type) {
   return type == ElementType::kQ9 ? "q9" : "q4_eas";
 }
 
+Orientation parse_orientation(const std::string& name) {
+  if (name == "standing") return Orientation::kStanding;
+  if (name == "hanging") return Orientation::kHanging;
+  HALFETI_USER_ERROR("structure.orientation: unknown orientation '" << name << "' (known: standing, hanging)");
+}
+
+std::string to_string(Orientation orientation) {
+  return orientation == Orientation::kStanding ? "standing" : "hanging";
+}
+
 int PlateMesh::element_count() const {
   return static_cast<int>(element_type == ElementType::kQ9 ? elements.size() : quads.size());
 }
@@ -50,25 +60,34 @@ namespace {
 
 // The node grid both meshes share, nx x ny nodes (row by row from the clamped base), with its clamped base,
 // named nodes, edge sets (edges of `per_edge` nodes: 3 for Q9, 2 for Q4 with the middle -1) and the
-// counterclockwise surface: right face upwards, top leftwards, left face downwards.
+// counterclockwise surface: right face upwards, top leftwards, left face downwards. All in the plate's frame; a
+// hanging plate maps it to the tank by the half turn about the clamp, x -> c - (x - c), which keeps the outline
+// counterclockwise and swaps the names of the sides.
 void lay_out_grid(const PlateGeometry& geo, int nx, int ny, int per_edge, PlateMesh& mesh) {
   auto id = [nx](int i, int j) { return i + nx * j; };
   mesh.cells_across = geo.cells_across;
   mesh.cells_along = geo.cells_along;
   mesh.nodes.resize(static_cast<std::size_t>(nx) * ny);
+  const bool hanging = geo.orientation == Orientation::kHanging;
   for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i)
-      mesh.nodes[id(i, j)] = geo.base_centre + Eigen::Vector2d(geo.thickness * (double(i) / (nx - 1) - 0.5),
-                                                               geo.height * double(j) / (ny - 1));
+    for (int i = 0; i < nx; ++i) {
+      const Eigen::Vector2d local(geo.thickness * (double(i) / (nx - 1) - 0.5), geo.height * double(j) / (ny - 1));
+      mesh.nodes[id(i, j)] = hanging ? Eigen::Vector2d(geo.base_centre - local) : Eigen::Vector2d(geo.base_centre + local);
+    }
   for (int i = 0; i < nx; ++i) mesh.clamped_nodes.push_back(id(i, 0));
-  mesh.named_nodes = {
-      {"base_left", id(0, 0)},     {"base_centre", id(nx / 2, 0)},     {"base_right", id(nx - 1, 0)},
-      {"top_left", id(0, ny - 1)}, {"top_centre", id(nx / 2, ny - 1)}, {"top_right", id(nx - 1, ny - 1)}};
+  if (hanging)
+    mesh.named_nodes = {
+        {"clamp_left", id(nx - 1, 0)},       {"clamp_centre", id(nx / 2, 0)},       {"clamp_right", id(0, 0)},
+        {"bottom_left", id(nx - 1, ny - 1)}, {"bottom_centre", id(nx / 2, ny - 1)}, {"bottom_right", id(0, ny - 1)}};
+  else
+    mesh.named_nodes = {
+        {"base_left", id(0, 0)},     {"base_centre", id(nx / 2, 0)},     {"base_right", id(nx - 1, 0)},
+        {"top_left", id(0, ny - 1)}, {"top_centre", id(nx / 2, ny - 1)}, {"top_right", id(nx - 1, ny - 1)}};
   const int step = per_edge - 1;
   auto edge = [&](int a, int mid, int b) { return std::array<int, 3>{a, per_edge == 3 ? mid : -1, b}; };
-  auto& left = mesh.edge_sets["left"];
-  auto& right = mesh.edge_sets["right"];
-  auto& top = mesh.edge_sets["top"];
+  auto& left = mesh.edge_sets[hanging ? "right" : "left"];
+  auto& right = mesh.edge_sets[hanging ? "left" : "right"];
+  auto& top = mesh.edge_sets[hanging ? "bottom" : "top"];
   for (int j = 0; j + step < ny; j += step) {
     left.push_back(edge(id(0, j), id(0, j + 1), id(0, j + step)));
     right.push_back(edge(id(nx - 1, j), id(nx - 1, j + 1), id(nx - 1, j + step)));

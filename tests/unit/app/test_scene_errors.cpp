@@ -53,6 +53,9 @@ const Case kCases[] = {
      "scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
      "fluid: {spacing: 0.01, kernel: gaussian, water: [{from: [0, 0], to: [0.3, 0.1]}]}\n",
      "bad.yaml:3:32: fluid.kernel: expected one of cubic_spline, wendland_c2, found 'gaussian'"},
+    {"unknown plate orientation",
+     "scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0], orientation: upside_down, time_step: 0.001}\n",
+     "bad.yaml:2:43: structure.orientation: expected one of standing, hanging, found 'upside_down'"},
     {"incompressible rubber", "scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0], poisson_ratio: 0.5}\n",
      "bad.yaml:2:45: structure.poisson_ratio: expected a number > -1 and < 0.5, found '0.5'"},
     {"cable without area",
@@ -130,6 +133,14 @@ TEST(SceneErrors, ChecksAcrossKeysNameTheFileAndKey) {
        "structure.time_step: required when the scene has no `fluid:`"},
       {"scene: {name: s, end_time: 1}\nexcitation: {kind: record, file: missing.csv}\n",
        "cannot open accelerogram"},
+      // A hanging plate (a gate) reaches down from its clamp: below the floor it does not fit; its nodes have the
+      // tank frame's names, so the standing plate's top_right is unknown.
+      {"scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
+       "structure: {base: [0.15, 0.05], orientation: hanging, height: 0.08, time_step: 0.001}\n",
+       "structure: the plate (base [0.15, 0.05], 0.003 x 0.08 m) does not fit in the tank"},
+      {"scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0.1], orientation: hanging, time_step: 0.001}\n"
+       "probes: [{name: p, kind: displacement, node: top_right, component: x}]\n",
+       "probes[0].node: no plate node named 'top_right'"},
   };
   for (const auto& c : cases) {
     const std::string path = dir + "/cross.yaml";
