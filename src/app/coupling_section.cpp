@@ -73,7 +73,8 @@ std::shared_ptr<const Schema> coupling_schema() {
                .def(true));
     s->add(Key::boolean("plate_wall_velocity",
                         "the plate-wall ghosts move with the plate's faces in the continuity and viscous terms "
-                        "(false: at rest; the feedback was unstable)")
+                        "(false: at rest, the still-water validation's setting; the paper scenes use true, stable "
+                        "with the interface added mass)")
                .def(false));
     s->add(Key::choice("plate_wall_exchange",
                        "the explicit plate-water exchange: extrapolated (the water's load and the face's velocity "

@@ -53,7 +53,8 @@ struct CouplingParameters {
   bool plate_wall = true;
   // scene: coupling.plate_wall_velocity: the ghosts move with the face (its mean velocity over the last step) in
   // eqs. 3 and 8; false (default): the faces' ghosts are at rest, the plate pushes the water by their positions and
-  // the contact (the moving-face feedback grew into a plate-water oscillation, docs/coupling.md).
+  // the contact. The moving-face feedback grew into a plate-water oscillation until the interface added mass
+  // (added_mass_layer, docs/coupling.md section 13); the paper scenes run with true.
   bool plate_wall_velocity = false;
   // scene: coupling.plate_wall_exchange: extrapolated (default) hands the plate the water's load extrapolated to
   // mid-step, 1.5 F_n - 0.5 F_n-1, and the water the face's velocity extrapolated to mid-step, 2 v_n-1/2 - v_n-3/2
