@@ -47,6 +47,8 @@ struct PlateWallConstants {
 // a band ghost only when the plate hides it (the segment between them crosses the plate's mid-line): the ghosts
 // then stand exactly for the solid and for the water the mid-line barrier takes out of the support, on a face, on
 // the top and round a corner alike.
+// All in the plate's own frame: for a hanging plate (the standing one turned about its clamp, structure.orientation)
+// the outline's "top" is its free end, below, and its first face the tank's left face (docs/coupling.md, section 14).
 class PlateWall {
  public:
   // The offsets apply to every outline set after this call.
