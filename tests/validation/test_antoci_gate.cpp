@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "reference_csv.hpp"
 #include "run_scene.hpp"
 
 using namespace halfeti;
@@ -23,26 +24,14 @@ struct Series {
   std::vector<double> t, v;
 };
 
-// The measured series: '#' lines, a header row, then time_s, raw value, value relative to the first (used).
+// The measured series: time_s, raw value, value relative to the first (used).
 Series read_measured(const std::string& path) {
-  std::ifstream in(path);
   Series s;
-  std::string line;
-  bool header = false;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (!header) {
-      header = true;
-      continue;
+  for (const auto& r : test::read_reference_csv(path))
+    if (r.size() >= 3) {
+      s.t.push_back(r[0]);
+      s.v.push_back(r[2]);
     }
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::istringstream row(line);
-    double t, raw, rel;
-    if (row >> t >> raw >> rel) {
-      s.t.push_back(t);
-      s.v.push_back(rel);
-    }
-  }
   return s;
 }
 

@@ -10,26 +10,15 @@
 #include <string>
 
 #include "halfeti/sph/fluid.hpp"
+#include "reference_csv.hpp"
 
 using namespace halfeti::sph;
 
 namespace {
 std::vector<std::pair<double, double>> read_data(const std::string& path) {
   std::vector<std::pair<double, double>> rows;
-  std::ifstream in(path);
-  std::string line;
-  bool header = false;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (!header) {
-      header = true;
-      continue;
-    }
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::istringstream is(line);
-    double t, z;
-    if (is >> t >> z) rows.push_back({t, z});
-  }
+  for (const auto& r : halfeti::test::read_reference_csv(path))
+    if (r.size() >= 2) rows.push_back({r[0], r[1]});
   return rows;
 }
 }  // namespace
