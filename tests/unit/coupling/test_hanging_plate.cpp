@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "plate_surface.hpp"
 #include "halfeti/core/error.hpp"
 #include "halfeti/sph/kernel.hpp"
 #include "halfeti/sph/plate_wall.hpp"
@@ -91,22 +92,15 @@ TEST(HangingPlate, OutlineRunsDownTheLeftFaceAcrossTheBottomAndUpTheRightFaceWit
   EXPECT_EQ(m.surface.back().second, m.node("clamp_right"));
   EXPECT_EQ(m.surface[80].first, m.node("bottom_left"));
   EXPECT_EQ(m.surface[83].second, m.node("bottom_right"));
-  double signed_area = 0.0;
   for (std::size_t k = 0; k < m.surface.size(); ++k) {
-    if (k > 0) {
-      EXPECT_EQ(m.surface[k].first, m.surface[k - 1].second);
-    }
     const Eigen::Vector2d a = m.nodes[m.surface[k].first], b = m.nodes[m.surface[k].second];
-    signed_area += 0.5 * (a.x() * b.y() - b.x() * a.y());
     // The outward normal (the tangent turned clockwise, as the coupling and the plate wall take it).
     const Eigen::Vector2d t = b - a, normal = Eigen::Vector2d(t.y(), -t.x()).normalized();
     const Eigen::Vector2d expected = k < 80 ? Eigen::Vector2d(-1, 0) : k < 84 ? Eigen::Vector2d(0, -1) : Eigen::Vector2d(1, 0);
     EXPECT_LT((normal - expected).norm(), 1e-12) << k;
     EXPECT_LT(0.5 * (a + b).y(), kClamp.y());  // no segment on the clamp
   }
-  const Eigen::Vector2d a = m.nodes[m.node("clamp_right")], b = m.nodes[m.node("clamp_left")];
-  signed_area += 0.5 * (a.x() * b.y() - b.x() * a.y());
-  EXPECT_NEAR(signed_area, 0.079 * 0.005, 1e-12);  // positive: counterclockwise
+  EXPECT_NEAR(halfeti::test::closed_surface_area(m), 0.079 * 0.005, 1e-12);  // positive: counterclockwise
 }
 
 // The ghost lattice and the mid-line of the hanging plate are the standing plate's turned about the clamp, with the
