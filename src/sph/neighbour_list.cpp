@@ -87,10 +87,7 @@ bool NeighbourSearch::crosses_any(const std::vector<int>& which, double xi, doub
 }
 
 bool NeighbourSearch::crosses_barrier(double xi, double yi, double xj, double yj) const {
-  return crosses_barrier_from(grid_.cell_of(xi, yi), xi, yi, xj, yj);
-}
-
-bool NeighbourSearch::crosses_barrier_from(int c, double xi, double yi, double xj, double yj) const {
+  const int c = grid_.cell_of(xi, yi);
   for (int k = barrier_start_[c]; k < barrier_start_[c + 1]; ++k) {
     const Barrier& b = barriers_[barrier_items_[k]];
     if (segments_cross(xi, yi, xj, yj, b.xa, b.ya, b.xb, b.yb)) return true;

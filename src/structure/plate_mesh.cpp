@@ -32,10 +32,6 @@ Orientation parse_orientation(const std::string& name) {
   HALFETI_USER_ERROR("structure.orientation: unknown orientation '" << name << "' (known: standing, hanging)");
 }
 
-std::string to_string(Orientation orientation) {
-  return orientation == Orientation::kStanding ? "standing" : "hanging";
-}
-
 int PlateMesh::element_count() const {
   return static_cast<int>(element_type == ElementType::kQ9 ? elements.size() : quads.size());
 }

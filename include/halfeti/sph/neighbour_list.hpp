@@ -94,7 +94,6 @@ class NeighbourSearch {
 
  private:
   bool crosses_barrier(double xi, double yi, double xj, double yj) const;
-  bool crosses_barrier_from(int cell, double xi, double yi, double xj, double yj) const;  // cell of (xi, yi)
   bool crosses_any(const std::vector<int>& which, double xi, double yi, double xj, double yj) const;
 
   parallel::CellGrid grid_;

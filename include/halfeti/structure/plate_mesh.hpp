@@ -24,7 +24,6 @@ std::string to_string(ElementType type);
 // gate, e.g. Antoci et al. 2007).
 enum class Orientation { kStanding, kHanging };
 Orientation parse_orientation(const std::string& name);  // "standing", "hanging"; UserError otherwise
-std::string to_string(Orientation orientation);
 
 struct PlateGeometry {
   double height = 0.08;                   // m, > 0 (paper: 8 cm)
