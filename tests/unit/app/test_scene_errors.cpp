@@ -64,6 +64,8 @@ const Case kCases[] = {
      "bad.yaml:3:61: cables[0].area: expected a number > 0 (m^2), found '0'"},
     {"layer outside eq. 23's range", "scene: {name: s, end_time: 1}\ncoupling: {ssosd: {layer_ratio: 60}}\n",
      "bad.yaml:2:33: coupling.ssosd.layer_ratio: expected a number in [5, 50], found '60'"},
+    {"interface added mass out of range", "scene: {name: s, end_time: 1}\ncoupling: {added_mass_layer: 5}\n",
+     "bad.yaml:2:30: coupling.added_mass_layer: expected a number in [0, 4] (dx), found '5'"},
     {"unknown plate-water exchange", "scene: {name: s, end_time: 1}\ncoupling: {plate_wall_exchange: implicit}\n",
      "bad.yaml:2:33: coupling.plate_wall_exchange: expected one of extrapolated, lagged, found 'implicit'"},
     {"broken YAML", "scene: {name: s, end_time: 1\n", "bad.yaml:2:1: not valid YAML: end of map flow not found"},
