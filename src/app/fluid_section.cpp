@@ -27,6 +27,15 @@ const Registry<sph::Scheme>& scheme_registry() {
   return r;
 }
 
+const Registry<sph::WallFriction>& wall_friction_registry() {
+  static const auto r = named_values<sph::WallFriction>({
+      {"none", "free slip: the walls push, they do not drag (the paper's walls)", sph::WallFriction::kNone},
+      {"log_law", "smooth-wall law of the wall on the first particle layer (docs/sph.md, \"Wall friction\")",
+       sph::WallFriction::kLogLaw},
+  });
+  return r;
+}
+
 std::shared_ptr<Schema> water_block_schema() {
   auto s = std::make_shared<Schema>("A rectangle of still water, filled on a square lattice of spacing dx.");
   s->add(Key::point("from", "lower left corner", "m").required());
@@ -75,6 +84,13 @@ std::shared_ptr<const Schema> fluid_schema() {
                .at_most(10.0));
     s->add(Key::boolean("wall_pressure", "add the kernel-truncated pressure of the wall (see docs/sph.md)")
                .def(true));
+    s->add(Key::choice("wall_friction", "shear of the tank's walls on the water beside them",
+                       wall_friction_registry().names())
+               .def("none"));
+    s->add(Key::real("kinematic_viscosity", "nu of the law of the wall (wall_friction: log_law)", "m^2/s")
+               .def(1.0e-6)
+               .positive()
+               .at_most(1.0));
     s->add(Key::real("cfl", "Courant number of the time step").def(0.2).positive().at_most(1.0));
     s->add(Key::real("max_dt", "largest time step", "s").def(1e-3).positive());
     s->add(Key::real("min_dt", "time-step floor; the run stops below it", "s").def(1e-9).positive());
@@ -135,6 +151,8 @@ sph::FluidParams fluid_params(const scene::Node& root, double peak_ground_accele
   p.tensile_correction = f.boolean("tensile_correction");
   p.wall_repulsion = f.real("wall_repulsion");
   p.wall_pressure = f.boolean("wall_pressure");
+  p.wall_friction = wall_friction_registry().get(f.string("wall_friction")).make;
+  p.kinematic_viscosity = f.real("kinematic_viscosity");
   p.cfl = f.real("cfl");
   p.max_dt = f.real("max_dt");
   p.min_dt = f.real("min_dt");

@@ -10,6 +10,7 @@
 #include "halfeti/parallel/halo_plan.hpp"
 #include "halfeti/parallel/migration.hpp"
 #include "halfeti/sph/equation_of_state.hpp"
+#include "halfeti/sph/wall_friction.hpp"
 
 namespace halfeti::sph {
 
@@ -223,11 +224,17 @@ void Fluid::compute_forces() {
     static const std::vector<double> kNoGradient;
     momentum_rates(pv, pairs_, wall_pairs_, walls_, ghost_pairs_, ghosts_, wall_taylor ? grad_rho_ : kNoGradient, k,
                    rates_);
+    if (params_.wall_friction == WallFriction::kLogLaw)  // the walls' shear on the first layer (wall_friction.hpp)
+      add_wall_friction(x_.data(), y_.data(), vx_.data(), vy_.data(), n_owned_,
+                        {params_.tank_length, params_.tank_height, params_.lid}, dx_, params_.kinematic_viscosity,
+                        rates_.ax.data(), rates_.ay.data());
     if (!plate_wall_.empty()) {  // the plate's surface as a moving wall (plate_wall.hpp)
       plate_wall_.find_pairs(x_.data(), y_.data(), n_owned_, kernel_);
       const PlateWallConstants pk{dx_, kernel_.h, k.rho0, c0_, k.alpha, k.body_x, k.body_y};
       plate_wall_.momentum(vx_.data(), vy_.data(), rho_.data(), p_.data(), mass_.data(), gid_.data(), pk,
                            rates_.ax.data(), rates_.ay.data());
+    }
+    if (!plate_wall_.empty() || params_.wall_friction != WallFriction::kNone) {
       double a2 = rates_.max_accel * rates_.max_accel;
       for (int i = 0; i < n_owned_; ++i) a2 = std::max(a2, rates_.ax[i] * rates_.ax[i] + rates_.ay[i] * rates_.ay[i]);
       rates_.max_accel = std::sqrt(a2);

@@ -13,6 +13,10 @@ enum class WallGhostPressure { kTaylor, kBodyForce };
 
 enum class Scheme { kDeltaSph, kStandard };  // standard = no density diffusion (delta term off)
 
+// Shear of the tank's walls on the water beside them: none (free slip, as the paper's walls) or the smooth-wall
+// law of the wall on the first particle layer (wall_friction.hpp).
+enum class WallFriction { kNone, kLogLaw };
+
 // A rectangle filled with still water on a square lattice of spacing dx; its top is the free surface used for the
 // hydrostatic initial density. `surface_amplitude` != 0 shapes the top as y1 + A cos(pi (x - x0_tank) / L)
 // (the first sloshing mode of the tank).
@@ -67,6 +71,8 @@ struct FluidParams {
   double wall_repulsion = 0.01;              // A = wall_repulsion * c0^2 / h
   bool wall_pressure = true;                 // wall ghosts: pressure and velocity of the fluid behind the wall
   bool wall_no_slip = false;                 // viscous term sees the walls as no-slip (default free slip)
+  WallFriction wall_friction = WallFriction::kNone;  // the walls' shear on the first layer (wall_friction.hpp)
+  double kinematic_viscosity = 1.0e-6;       // nu [m^2/s] of the law of the wall (water at 20 C)
   // How the wall ghosts' pressure is continued from the particle that sees them (docs/sph.md "Walls"):
   // kTaylor: p_g = p_i + rho_i (b.n)(n.r_gi) + (grad p_i.t)(t.r_gi), the wall condition across the wall and the
   // particle's own pressure gradient (eqs. 6, 9) along it; kBodyForce: p_g = p_i + rho_i b.r_gi (Adami et al.

@@ -53,6 +53,14 @@ const Case kCases[] = {
      "scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
      "fluid: {spacing: 0.01, kernel: gaussian, water: [{from: [0, 0], to: [0.3, 0.1]}]}\n",
      "bad.yaml:3:32: fluid.kernel: expected one of cubic_spline, wendland_c2, found 'gaussian'"},
+    {"unknown wall friction",
+     "scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
+     "fluid: {spacing: 0.01, wall_friction: manning, water: [{from: [0, 0], to: [0.3, 0.1]}]}\n",
+     "bad.yaml:3:39: fluid.wall_friction: expected one of none, log_law, found 'manning'"},
+    {"negative viscosity",
+     "scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
+     "fluid: {spacing: 0.01, kinematic_viscosity: -1e-6, water: [{from: [0, 0], to: [0.3, 0.1]}]}\n",
+     "bad.yaml:3:45: fluid.kinematic_viscosity: expected a number > 0 and <= 1 (m^2/s), found '-1e-6'"},
     {"unknown plate orientation",
      "scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0], orientation: upside_down, time_step: 0.001}\n",
      "bad.yaml:2:43: structure.orientation: expected one of standing, hanging, found 'upside_down'"},

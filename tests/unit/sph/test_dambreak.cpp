@@ -36,9 +36,16 @@ TEST(DamBreak, SurgeFrontFollowsMartinMoyce) {
   // twice the long-wave speed sqrt(g d) the automatic c0 assumes; c0 = u_b / sqrt(drho/rho0) = 30 m/s for
   // drho/rho0 = 0.5%. (The automatic 15 m/s lets the front run 1.2% further: docs/sph.md.)
   p.sound_speed = 2.0 * std::sqrt(p.gravity * 2.0 * a) / std::sqrt(0.5 * p.max_density_variation);
+  // The experiment's floor drags the surge (its late front runs at 1.69 a sqrt(2g/a) against the free-slip 1.81):
+  // the smooth-wall law of the wall on the first particle layer (wall_friction.hpp), no fitted constant.
+  p.wall_friction = WallFriction::kLogLaw;
   Fluid fluid(MPI_COMM_WORLD, p, nullptr);
   const double tscale = std::sqrt(2.0 * p.gravity / a);  // T* = t sqrt(2 g / a)
   double sum2 = 0.0;
+  // The surge's speed dZ/dT*: least-squares slopes of the data and of the run over the points from T* = 4.4 on,
+  // where the data lie on a straight line (the surge after the collapse).
+  const double surge_from = 4.4;
+  double n = 0, st = 0, st2 = 0, sz = 0, stz = 0, sr = 0, str = 0;
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   for (const auto& [tstar, z_data] : data) {
@@ -46,18 +53,32 @@ TEST(DamBreak, SurgeFrontFollowsMartinMoyce) {
     const double z = fluid.front_position(a) / a;
     const double err = (z - z_data) / z_data;
     sum2 += err * err;
+    if (tstar >= surge_from) {
+      n += 1;
+      st += tstar;
+      st2 += tstar * tstar;
+      sz += z_data;
+      stz += tstar * z_data;
+      sr += z;
+      str += tstar * z;
+    }
     if (rank == 0) std::printf("T* = %.3f: Z/a = %.3f (data %.3f), error %+.2f%%\n", tstar, z, z_data, 100 * err);
   }
   const double rms = std::sqrt(sum2 / data.size());
-  // The target is 5%; not met (docs/sph.md has the table): the free-slip front leads the data at every point, by
-  // +11 to +16% before T* = 4 and +7 to +9% after, and runs at 1.81 a sqrt(2g/a) late against the data's 1.69
-  // (Ritter's ideal-fluid value is 2). The former 7.7% came from the wall-pressure defect: the clamped wall ghosts
-  // tore particles in tension off the floor (-12.5 kPa at t = 10 ms), which slowed the surge. 9.4% until the
-  // floor's ghosts got the particle's own horizontal pressure gradient (eqs. 6, 9; before, their pressure had none,
-  // and the particles at the floor felt only the fluid part of the gradient that drives the surge): 10.2% since.
-  // This guards the measured 10.2% against regressions.
+  const double slope_data = (n * stz - st * sz) / (n * st2 - st * st), slope = (n * str - st * sr) / (n * st2 - st * st);
+  const double slope_err = (slope - slope_data) / slope_data;
+  // The target is 5 % over all 15 points; not met (docs/sph.md, "Dam break", has the tables). Before T* = 4.4 the
+  // front leads the data by +8..+16 % with free-slip walls and with the wall friction alike (and by more at a/40):
+  // the first 0.2 s of the collapse, which the floor's friction cannot reach; the experiment's release, which the
+  // run does not model, is the likely cause. The surge's speed after it is bracketed: free slip +6.9 %, the law of
+  // the wall -7.0 % (-5.0 % at a/40); the friction's positions agree better late (-1.6..+4.9 %) partly because its
+  // slower surge eats the early lead. Guards: RMS at most 8.5 % (measured 7.8 %; free slip 10.2 %) and the surge's
+  // speed within 8 % of the data's (measured -7.0 %).
   if (rank == 0)
-    std::printf("RMS relative error %.2f%% over %zu points; %ld particles, %ld steps, wall %.1f s in forces\n",
-                100 * rms, data.size(), fluid.global_count(), fluid.step_count(), fluid.timers().seconds("forces"));
-  EXPECT_LE(rms, 0.11);
+    std::printf("RMS relative error %.2f%% over %zu points; surge speed dZ/dT* from T* = %.1f: %.3f (data %.3f, "
+                "%+.1f%%); %ld particles, %ld steps, wall %.1f s in forces\n",
+                100 * rms, data.size(), surge_from, slope, slope_data, 100 * slope_err, fluid.global_count(),
+                fluid.step_count(), fluid.timers().seconds("forces"));
+  EXPECT_LE(rms, 0.085);
+  EXPECT_LE(std::abs(slope_err), 0.08);
 }
