@@ -27,6 +27,7 @@ void momentum_rates(const ParticleView& pv, const PairList& pairs, const PairLis
   const double inv_w_dx = 1.0 / k.w_dx;
   const double eta2 = 0.01 * k.h * k.h;
   const double viscosity = k.alpha * k.h * k.c0 * k.rho0;     // eq. 4
+  const double body_norm = std::hypot(k.body_x, k.body_y);    // |b|, the same for every particle
 
   for (int i = 0; i < n; ++i) {
     const double rhoi = pv.rho[i], pi = pv.p[i], ui = pv.vx[i], vi = pv.vy[i];
@@ -71,7 +72,7 @@ void momentum_rates(const ParticleView& pv, const PairList& pairs, const PairLis
     const bool taylor = !grad_rho.empty();
     const double gpx = taylor ? k.c0 * k.c0 * grad_rho[2 * i] : 0.0;  // eq. 9: grad p = c0^2 grad rho
     const double gpy = taylor ? k.c0 * k.c0 * grad_rho[2 * i + 1] : 0.0;
-    const double slope_bound = rhoi * std::hypot(k.body_x, k.body_y);
+    const double slope_bound = rhoi * body_norm;
     if (k.wall_pressure)
       for_each_neighbour(ghost_pairs, i, [&](int g, int q) {
         const double rgx = ghost_pairs.ex[q], rgy = ghost_pairs.ey[q];  // r_g - r_i

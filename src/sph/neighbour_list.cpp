@@ -126,17 +126,29 @@ void NeighbourSearch::fluid_pairs(const double* x, const double* y, const std::i
     const bool near_barrier = !near_barriers_.empty();
     const int x_lo = std::max(cx - 1, 0), x_hi = std::min(cx + 1, grid_.nx - 1);
     // Global cell order (rows ascending, and within a row the cells ascending), then global id inside a cell.
+    // Two passes: the candidates within the support are kept without a branch on the distance (in a disordered
+    // flow r < 2h is unpredictable, and mispredicted branches cost more than the stores), then each kept pair is
+    // tested against the near barriers and evaluated. The order, and so every sum over the pairs, is unchanged.
+    int kept = 0;
     for (int jy = std::max(cy - 1, 0); jy <= std::min(cy + 1, grid_.ny - 1); ++jy) {
-      const int k_end = cell_start_[jy * grid_.nx + x_hi + 1];
-      for (int k = cell_start_[jy * grid_.nx + x_lo]; k < k_end; ++k) {
-        const double dx = bx_[k] - xi, dy = by_[k] - yi, r2 = dx * dx + dy * dy;
-        if (r2 >= rc2) continue;
-        const int j = cell_items_[k];
-        if (j == i) continue;
-        if (near_barrier && crosses_any(near_barriers_, xi, yi, x[j], y[j])) continue;
-        min_r2 = std::min(min_r2, r2);
-        out.push(j, dx, dy, std::sqrt(r2), eval_);
+      const int k_begin = cell_start_[jy * grid_.nx + x_lo], k_end = cell_start_[jy * grid_.nx + x_hi + 1];
+      if (static_cast<int>(cand_.size()) < kept + (k_end - k_begin)) {
+        cand_.resize(2 * static_cast<std::size_t>(kept + (k_end - k_begin)));
+        cand_r2_.resize(cand_.size());
       }
+      for (int k = k_begin; k < k_end; ++k) {
+        const double dx = bx_[k] - xi, dy = by_[k] - yi, r2 = dx * dx + dy * dy;
+        cand_[kept] = k;
+        cand_r2_[kept] = r2;
+        kept += (r2 < rc2) & (cell_items_[k] != i);
+      }
+    }
+    for (int m = 0; m < kept; ++m) {
+      const int k = cand_[m], j = cell_items_[k];
+      if (near_barrier && crosses_any(near_barriers_, xi, yi, x[j], y[j])) continue;
+      const double r2 = cand_r2_[m];
+      min_r2 = std::min(min_r2, r2);
+      out.push(j, bx_[k] - xi, by_[k] - yi, std::sqrt(r2), eval_);
     }
     out.start[i + 1] = static_cast<int>(out.size());
   }

@@ -110,6 +110,8 @@ class NeighbourSearch {
   FixedBins fixed_[2];
   std::vector<int> barrier_start_, barrier_items_;  // per cell: indices into barriers_ (CSR)
   std::vector<int> near_barriers_;  // scratch of fluid_pairs: the barriers within the support of one particle
+  std::vector<int> cand_;           // scratch of fluid_pairs: one particle's candidates within the support
+  std::vector<double> cand_r2_;     // and their squared distances
   std::vector<Barrier> barriers_;
   double min_distance_ = 0.0;
 };
