@@ -94,10 +94,16 @@ std::shared_ptr<const Schema> fluid_schema() {
     s->add(Key::real("cfl", "Courant number of the time step").def(0.2).positive().at_most(1.0));
     s->add(Key::real("max_dt", "largest time step", "s").def(1e-3).positive());
     s->add(Key::real("min_dt", "time-step floor; the run stops below it", "s").def(1e-9).positive());
-    s->add(Key::real("rebalance_threshold", "rebalance when max / mean particles per rank exceeds this")
+    s->add(Key::real("rebalance_threshold", "rebalance when max / target particles per rank exceeds this")
                .def(1.15)
                .at_least(1.0));
     s->add(Key::integer("rebalance_interval", "steps between balance checks").def(50).at_least(1));
+    s->add(Key::real("first_rank_share",
+                     "rank 0's share of the particles relative to each other rank's (rank 0 also solves the "
+                     "structure while the others wait); 1 = equal")
+               .def(1.0)
+               .positive()
+               .at_most(1.0));
     return std::shared_ptr<const Schema>(s);
   }();
   return schema;
@@ -161,6 +167,7 @@ sph::FluidParams fluid_params(const scene::Node& root, double peak_ground_accele
                                             << " s");
   p.rebalance_threshold = f.real("rebalance_threshold");
   p.rebalance_interval = static_cast<int>(f.integer("rebalance_interval"));
+  p.first_rank_share = f.real("first_rank_share");
   return p;
 }
 

@@ -118,7 +118,7 @@ void Fluid::initialise_particles() {
   n_global_ = next;
   std::vector<long> counts(grid_.cell_count(), 0);
   for (std::size_t k = 0; k < x.size(); ++k) ++counts[grid_.cell_of(x[k], y[k])];
-  owner_ = parallel::partition_cells_collective(comm_.get(), grid_, counts);
+  owner_ = parallel::partition_cells_collective(comm_.get(), grid_, counts, params_.first_rank_share);
   for (std::size_t k = 0; k < x.size(); ++k) {
     if (owner_[grid_.cell_of(x[k], y[k])] != rank_) continue;
     gid_.push_back(gid[k]);
@@ -370,8 +370,8 @@ std::vector<long> Fluid::global_cell_counts() const {
 void Fluid::maybe_rebalance() {
   if (size_ == 1 || params_.rebalance_interval <= 0 || step_ % params_.rebalance_interval != 0) return;
   const auto counts = global_cell_counts();
-  if (parallel::imbalance(owner_, counts, size_) <= params_.rebalance_threshold) return;
-  owner_ = parallel::partition_cells_collective(comm_.get(), grid_, counts);
+  if (parallel::imbalance(owner_, counts, size_, params_.first_rank_share) <= params_.rebalance_threshold) return;
+  owner_ = parallel::partition_cells_collective(comm_.get(), grid_, counts, params_.first_rank_share);
 }
 
 void Fluid::migrate() {

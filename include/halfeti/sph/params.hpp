@@ -85,7 +85,8 @@ struct FluidParams {
   double min_dt = 1.0e-9;                    // [s]; below it the run stops (health)
 
   // Distribution
-  double rebalance_threshold = 1.15;         // rebalance when max/mean particles per rank exceeds it
+  double rebalance_threshold = 1.15;         // rebalance when max/target particles per rank exceeds it
+  double first_rank_share = 1.0;             // rank 0's particles / another rank's (it also solves the plate)
   int rebalance_interval = 50;               // steps between imbalance checks
 
   // Health

@@ -61,6 +61,10 @@ const Case kCases[] = {
      "scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
      "fluid: {spacing: 0.01, kinematic_viscosity: -1e-6, water: [{from: [0, 0], to: [0.3, 0.1]}]}\n",
      "bad.yaml:3:45: fluid.kinematic_viscosity: expected a number > 0 and <= 1 (m^2/s), found '-1e-6'"},
+    {"first rank's share above one",
+     "scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
+     "fluid: {spacing: 0.01, first_rank_share: 1.5, water: [{from: [0, 0], to: [0.3, 0.1]}]}\n",
+     "bad.yaml:3:42: fluid.first_rank_share: expected a number > 0 and <= 1, found '1.5'"},
     {"unknown plate orientation",
      "scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0], orientation: upside_down, time_step: 0.001}\n",
      "bad.yaml:2:43: structure.orientation: expected one of standing, hanging, found 'upside_down'"},
