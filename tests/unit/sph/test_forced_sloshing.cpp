@@ -20,17 +20,13 @@
 #include "halfeti/excitation/ground_motion.hpp"
 #include "halfeti/sph/fluid.hpp"
 #include "linear_sloshing.hpp"
+#include "paper_tank.hpp"
 
 using namespace halfeti::sph;
 
 TEST(ForcedSloshing, WallElevationFollowsLinearTheoryUnderASmallPulse) {
-  const double L = 0.30, d = 0.10, A = 0.5, T = 0.6;
-  FluidParams p;
-  p.tank_length = L;
-  p.tank_height = 0.40;
-  p.spacing = 0.003;
-  p.water = {{0.0, 0.0, L, d, 0.0}};
-  p.peak_ground_acceleration = A;
+  const double L = halfeti::test::kPaperTankLength, d = halfeti::test::kPaperWaterDepth, A = 0.5, T = 0.6;
+  const FluidParams p = halfeti::test::paper_tank_water(0.003, A);
   const auto motion = halfeti::excitation::make_cosine_pulse(A, T, 0.0);
   Fluid fluid(MPI_COMM_WORLD, p, motion.get());
   const halfeti::test::LinearSloshing theory{L, d, p.gravity};

@@ -19,17 +19,13 @@
 
 #include "halfeti/excitation/ground_motion.hpp"
 #include "halfeti/sph/fluid.hpp"
+#include "paper_tank.hpp"
 
 using namespace halfeti::sph;
 
 TEST(WallPulse, NoTearingOffTheWallUnderASuddenBodyForce) {
-  const double L = 0.30, d = 0.10, a = 3.13, period = 0.6, t_end = 0.15;
-  FluidParams p;
-  p.tank_length = L;
-  p.tank_height = 0.40;
-  p.spacing = 0.005;
-  p.water = {{0.0, 0.0, L, d, 0.0}};
-  p.peak_ground_acceleration = a;
+  const double L = halfeti::test::kPaperTankLength, a = 3.13, period = 0.6, t_end = 0.15;
+  const FluidParams p = halfeti::test::paper_tank_water(0.005, a);
   const auto motion = halfeti::excitation::make_cosine_pulse(-a, period, 0.0);
   Fluid fluid(MPI_COMM_WORLD, p, motion.get());
   double vmax = 0.0, pmin = 0.0, pmax = 0.0;
