@@ -27,7 +27,7 @@ double LawOfTheWall::friction_velocity(double u, double y, double nu) const {
 
 void add_wall_friction(const double* x, const double* y, const double* vx, const double* vy, int n,
                        const TankWalls& tank, double dx, double nu, double* ax, double* ay) {
-  const LawOfTheWall law;
+  static const LawOfTheWall law;  // its crossover is solved once, not every step
   const double y_min = 0.5 * dx, inv_dx = 1.0 / dx;
   // A wall's shear on particle i: the wall at distance dist, its tangential velocity component ut along (tx, ty).
   const auto shear = [&](int i, double dist, double tx, double ty) {
