@@ -78,6 +78,25 @@ class KernelEvaluator {
     }
   }
 
+  // W and F for n squared distances at once, r = sqrt(r2[m]): the same values as operator() on each, in a loop
+  // the compiler turns into vector instructions (sqrt and division two or four at a time).
+  void batch(const double* r2, int n, double* w, double* f) const {
+    if (cubic_) {
+      for (int m = 0; m < n; ++m) {
+        const double q = std::sqrt(r2[m]) * inv_h_, a = 2.0 - q;
+        const double w_in = w0_ * (1.0 - 1.5 * q * q + 0.75 * q * q * q);
+        const double f_in = f0_ * (-3.0 + 2.25 * q);
+        const double w_out = w0_ * 0.25 * a * a * a;
+        const double f_out = -f0_ * 0.75 * a * a / q;
+        const bool inner = q < 1.0;
+        w[m] = inner ? w_in : w_out;
+        f[m] = inner ? f_in : f_out;
+      }
+    } else {
+      for (int m = 0; m < n; ++m) operator()(std::sqrt(r2[m]), w[m], f[m]);
+    }
+  }
+
  private:
   bool cubic_;
   double inv_h_, w0_, f0_;

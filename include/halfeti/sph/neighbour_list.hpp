@@ -6,6 +6,8 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include "halfeti/parallel/cell_grid.hpp"
@@ -36,10 +38,33 @@ inline std::vector<Barrier> barriers_from_polyline(const std::vector<double>& xy
   return out;
 }
 
+// Leaves new elements of a std::vector uninitialised on resize (the pair search writes every one it adds, and
+// zero-filling them first would cost a pass of stores per particle).
+template <class T>
+struct UninitialisedAllocator : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = UninitialisedAllocator<U>;
+  };
+  UninitialisedAllocator() = default;
+  template <class U>
+  UninitialisedAllocator(const UninitialisedAllocator<U>&) noexcept {}
+  template <class U>
+  void construct(U* p) noexcept {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+
 struct PairList {
+  template <class T>
+  using Array = std::vector<T, UninitialisedAllocator<T>>;
   std::vector<int> start;  // pairs of owned particle i are [start[i], start[i+1])
-  std::vector<int> j;
-  std::vector<double> ex, ey, w, f;
+  Array<int> j;
+  Array<double> ex, ey, w, f;
   void clear() {
     j.clear(); ex.clear(); ey.clear(); w.clear(); f.clear();
   }
@@ -47,6 +72,12 @@ struct PairList {
     double ww, ff;
     k(rr, ww, ff);
     j.push_back(jj); ex.push_back(dx); ey.push_back(dy); w.push_back(ww); f.push_back(ff);
+  }
+  // Makes room for n more pairs and returns the index of the first (their values are left for the caller).
+  std::size_t grow(std::size_t n) {
+    const std::size_t base = j.size();
+    j.resize(base + n); ex.resize(base + n); ey.resize(base + n); w.resize(base + n); f.resize(base + n);
+    return base;
   }
   void reserve(std::size_t n) {
     j.reserve(n); ex.reserve(n); ey.reserve(n); w.reserve(n); f.reserve(n);
