@@ -276,9 +276,10 @@ const CouplingStepReport& ContactCoupling::step(double t, double dt, const Inter
   std::vector<Invader> local, gathered;
   {
     ScopedTimer timer(timers_, "search");
-    double u_max = 0.0;
+    double u2_max = 0.0;
     for (std::size_t i = 0; i < particles.count; ++i)
-      u_max = std::max(u_max, std::hypot(particles.vx[i], particles.vy[i]));
+      u2_max = std::max(u2_max, particles.vx[i] * particles.vx[i] + particles.vy[i] * particles.vy[i]);
+    double u_max = std::sqrt(u2_max);
     MPI_Allreduce(MPI_IN_PLACE, &u_max, 1, MPI_DOUBLE, MPI_MAX,
                   comm_.get());  // max is exact: rank-independent
     last_.u_max = u_max;

@@ -105,9 +105,11 @@ void NeighbourSearch::fluid_pairs(const double* x, const double* y, const std::i
     bx_[k] = x[cell_items_[k]];
     by_[k] = y[cell_items_[k]];
   }
-  out.clear();
+  // The pair arrays are sized once for about 24 pairs a particle (or what the last search needed), grown when a
+  // particle needs more and cut to the count at the end.
   out.start.assign(n_owned + 1, 0);
-  out.reserve(static_cast<std::size_t>(n_owned) * 24);
+  std::size_t n_pairs = 0, room = std::max(out.j.capacity(), static_cast<std::size_t>(n_owned) * 24);
+  out.resize(room);
   const double rc2 = kernel_.support() * kernel_.support();
   const bool barriers = !barriers_.empty();
   double min_r2 = std::numeric_limits<double>::infinity();
@@ -154,7 +156,12 @@ void NeighbourSearch::fluid_pairs(const double* x, const double* y, const std::i
       }
       kept = left;
     }
-    const std::size_t base = out.grow(static_cast<std::size_t>(kept));
+    if (n_pairs + kept > room) {
+      room = 2 * (n_pairs + kept);
+      out.resize(room);
+    }
+    const std::size_t base = n_pairs;
+    n_pairs += kept;
     int* pj = out.j.data() + base;
     double *pex = out.ex.data() + base, *pey = out.ey.data() + base;
     for (int m = 0; m < kept; ++m) {
@@ -165,8 +172,9 @@ void NeighbourSearch::fluid_pairs(const double* x, const double* y, const std::i
       min_r2 = std::min(min_r2, cand_r2_[m]);
     }
     eval_.batch(cand_r2_.data(), kept, out.w.data() + base, out.f.data() + base);
-    out.start[i + 1] = static_cast<int>(out.size());
+    out.start[i + 1] = static_cast<int>(n_pairs);
   }
+  out.resize(n_pairs);
   min_distance_ = std::sqrt(min_r2);
 }
 

@@ -135,7 +135,7 @@ void PlateWall::set_outline(const PlateOutline& true_outline, double dx, double 
   const PlateOutline& o = outline_;
   support_ = support;
   gx_.clear(); gy_.clear(); gvol_.clear(); gregion_.clear(); gfibre_.clear(); row_start_.clear();
-  mid_x_.clear(); mid_y_.clear();
+  mid_x_.clear(); mid_y_.clear(); mid_box_.clear();
   fibres_ = 0;
   const int n = static_cast<int>(o.size());
   if (n < 2) return;
@@ -144,6 +144,9 @@ void PlateWall::set_outline(const PlateOutline& true_outline, double dx, double 
     mid_x_.push_back(0.5 * (o.x[k] + o.x[n - 1 - k]));
     mid_y_.push_back(0.5 * (o.y[k] + o.y[n - 1 - k]));
   }
+  for (int q = 0; q < fibres_; ++q)  // each mid-line segment's box (x0, y0, x1, y1)
+    mid_box_.insert(mid_box_.end(), {std::min(mid_x_[q], mid_x_[q + 1]), std::min(mid_y_[q], mid_y_[q + 1]),
+                                     std::max(mid_x_[q], mid_x_[q + 1]), std::max(mid_y_[q], mid_y_[q + 1])});
   // Arc length of every face point from its top corner, down each face.
   arc_.assign(n, 0.0);
   for (int k = right_end_ - 1; k >= 0; --k) arc_[k] = arc_[k + 1] + std::hypot(o.x[k + 1] - o.x[k], o.y[k + 1] - o.y[k]);
@@ -222,9 +225,14 @@ void PlateWall::set_outline(const PlateOutline& true_outline, double dx, double 
 bool PlateWall::hidden(double xi, double yi, double xg, double yg, int fibre) const {
   // The mid-line segments near the ghost's fibre (a segment between points within the support cannot reach
   // further along the plate than the fibre window).
+  // A segment whose box misses the pair's box cannot cross it: the box test skips most of the window.
   const int lo = std::max(0, fibre - fibre_window_), hi = std::min(fibres_, fibre + fibre_window_);
-  for (int q = lo; q < hi; ++q)
+  const double x0 = std::min(xi, xg), x1 = std::max(xi, xg), y0 = std::min(yi, yg), y1 = std::max(yi, yg);
+  for (int q = lo; q < hi; ++q) {
+    const double* b = &mid_box_[4 * q];
+    if (b[0] > x1 || b[2] < x0 || b[1] > y1 || b[3] < y0) continue;
     if (segments_cross(xi, yi, xg, yg, mid_x_[q], mid_y_[q], mid_x_[q + 1], mid_y_[q + 1])) return true;
+  }
   return false;
 }
 
@@ -234,28 +242,31 @@ void PlateWall::closest_point(double xi, double yi, double reach, int& best, dou
   // particle stands more clearly in front of (as the contact search). Runs whose box is farther than the best so
   // far (or than the reach) cannot hold it: skipping them gives the full scan's answer, ties included.
   const auto& o = outline_;
+  // (Compared as squared distances: one square root at the end.)
   best = -1;
-  best_d = std::numeric_limits<double>::max();
+  double best_d2 = std::numeric_limits<double>::max();
   best_g = best_eta = 0.0;
+  const double reach2 = reach * reach;
   for (std::size_t run = 0; run + 1 < run_start_.size(); ++run) {
     const double bx = std::max({run_box_[4 * run] - xi, 0.0, xi - run_box_[4 * run + 2]});
     const double by = std::max({run_box_[4 * run + 1] - yi, 0.0, yi - run_box_[4 * run + 3]});
-    const double box_d = std::hypot(bx, by);
-    if (box_d >= reach || box_d > best_d) continue;
+    const double box_d2 = bx * bx + by * by;
+    if (box_d2 >= reach2 || box_d2 > best_d2) continue;
     for (int s = run_start_[run]; s < run_start_[run + 1]; ++s) {
       const double dxs = o.x[s + 1] - o.x[s], dys = o.y[s + 1] - o.y[s], l2 = dxs * dxs + dys * dys;
       const double rx = xi - o.x[s], ry = yi - o.y[s];
       const double eta = std::clamp((rx * dxs + ry * dys) / l2, 0.0, 1.0);
-      const double d = std::hypot(rx - eta * dxs, ry - eta * dys);
+      const double ux = rx - eta * dxs, uy = ry - eta * dys, d2 = ux * ux + uy * uy;
       const double g = (rx * dys - ry * dxs) / std::sqrt(l2);
-      if (d < best_d || (d == best_d && g > best_g)) {
+      if (d2 < best_d2 || (d2 == best_d2 && g > best_g)) {
         best = s;
-        best_d = d;
+        best_d2 = d2;
         best_g = g;
         best_eta = eta;
       }
     }
   }
+  best_d = best < 0 ? std::numeric_limits<double>::max() : std::sqrt(best_d2);
 }
 
 double PlateWall::normal_velocity(std::size_t a, const double* vx, const double* vy) const {
@@ -289,7 +300,7 @@ void PlateWall::find_pairs(const double* x, const double* y, int n, const Kernel
     const double cx = o.x[best] + best_eta * (o.x[best + 1] - o.x[best]);
     const double cy = o.y[best] + best_eta * (o.y[best + 1] - o.y[best]);
     // The particle's row: the arc length of its closest point below the top corners (0 on the top).
-    const double l = std::hypot(o.x[best + 1] - o.x[best], o.y[best + 1] - o.y[best]);
+    const double tx = o.x[best + 1] - o.x[best], ty = o.y[best + 1] - o.y[best], l = std::sqrt(tx * tx + ty * ty);
     const double arc = best < right_end_ ? arc_[best] - best_eta * l : best >= left_start_ ? arc_[best] + best_eta * l : 0.0;
     const int row = static_cast<int>(arc / dx_), rows = static_cast<int>(row_start_.size()) - 1;
     const std::size_t before = ghost_.size();

@@ -73,11 +73,9 @@ struct PairList {
     k(rr, ww, ff);
     j.push_back(jj); ex.push_back(dx); ey.push_back(dy); w.push_back(ww); f.push_back(ff);
   }
-  // Makes room for n more pairs and returns the index of the first (their values are left for the caller).
-  std::size_t grow(std::size_t n) {
-    const std::size_t base = j.size();
-    j.resize(base + n); ex.resize(base + n); ey.resize(base + n); w.resize(base + n); f.resize(base + n);
-    return base;
+  // n pairs; new ones are left for the caller to write (no zero fill).
+  void resize(std::size_t n) {
+    j.resize(n); ex.resize(n); ey.resize(n); w.resize(n); f.resize(n);
   }
   void reserve(std::size_t n) {
     j.reserve(n); ex.reserve(n); ey.reserve(n); w.reserve(n); f.reserve(n);

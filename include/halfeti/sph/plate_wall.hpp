@@ -89,6 +89,7 @@ class PlateWall {
   int fibres_ = 0, fibre_window_ = 0, row_window_ = 0;
   double dx_ = 0.0;
   std::vector<double> mid_x_, mid_y_;    // mid-line points, base to top (fibres_ + 1)
+  std::vector<double> mid_box_;          // and its segments' boxes (x0, y0, x1, y1)
   std::vector<int> run_start_;           // runs of 8 outline segments [run_start_[r], run_start_[r + 1])
   std::vector<double> run_box_;          // and their boxes (x0, y0, x1, y1)
   std::array<double, 4> box_{};          // the outline's box (x0, y0, x1, y1)
