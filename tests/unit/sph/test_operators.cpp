@@ -149,3 +149,26 @@ TEST(Kernel, EvaluatorMatchesKernel) {
     }
   }
 }
+
+// The pair search's vectorised loop must give exactly what one evaluation gives (the sums over pairs, and so the
+// results, must not depend on how the kernel was evaluated), on both pieces, at the joint q = 1 and at r = 0.
+TEST(Kernel, BatchIsBitwiseTheSingleEvaluation) {
+  for (auto kind : {KernelKind::kCubicSpline, KernelKind::kWendlandC2}) {
+    Kernel k{kind, 0.002};
+    k.gradient_scale = 1.01;
+    const KernelEvaluator eval(k);
+    std::vector<double> r2;
+    for (double r = 0.0; r < k.support(); r += 0.0000313) r2.push_back(r * r);
+    r2.push_back(k.h * k.h);
+    r2.push_back(std::nextafter(k.h, 0.0) * std::nextafter(k.h, 0.0));
+    const int n = static_cast<int>(r2.size());
+    std::vector<double> w(n), f(n);
+    eval.batch(r2.data(), n, w.data(), f.data());
+    for (int m = 0; m < n; ++m) {
+      double ws, fs;
+      eval(std::sqrt(r2[m]), ws, fs);
+      EXPECT_EQ(w[m], ws) << "r2 = " << r2[m];
+      EXPECT_EQ(f[m], fs) << "r2 = " << r2[m];
+    }
+  }
+}
