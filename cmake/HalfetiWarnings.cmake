@@ -4,8 +4,8 @@ target_compile_options(halfeti_options INTERFACE -Wall -Wextra -Wno-unused-param
 # The math functions need not set errno (halfeti never reads it): sqrt becomes one instruction that loops can
 # vectorise. The values are unchanged (IEEE sqrt is correctly rounded either way).
 target_compile_options(halfeti_options INTERFACE -fno-math-errno)
-# The instruction set: by default the build machine's own (-march=native: AVX2 and FMA where the CPU has them, so
-# that the pair search's kernel loop runs four pairs at a time). Build with -DHALFETI_ARCH= for the compiler's
+# The instruction set: by default the build machine's own (-march=native: AVX2 or AVX-512 and FMA where the CPU has
+# them, so that the pair search's kernel loop runs four or eight pairs at a time). Build with -DHALFETI_ARCH= for the compiler's
 # portable default (a build for other machines than the one compiling), or name a level, e.g. x86-64-v3. Results
 # differ between instruction sets in the last bits (fused multiply-adds), never between rank counts of one build.
 set(HALFETI_ARCH "native" CACHE STRING "-march for every halfeti target (empty: the compiler's default)")

@@ -224,8 +224,8 @@ void PlateWall::set_outline(const PlateOutline& true_outline, double dx, double 
 
 bool PlateWall::hidden(double xi, double yi, double xg, double yg, int fibre) const {
   // The mid-line segments near the ghost's fibre (a segment between points within the support cannot reach
-  // further along the plate than the fibre window).
-  // A segment whose box misses the pair's box cannot cross it: the box test skips most of the window.
+  // further along the plate than the fibre window); one whose box misses the pair's box cannot cross it, and the
+  // box test skips most of the window.
   const int lo = std::max(0, fibre - fibre_window_), hi = std::min(fibres_, fibre + fibre_window_);
   const double x0 = std::min(xi, xg), x1 = std::max(xi, xg), y0 = std::min(yi, yg), y1 = std::max(yi, yg);
   for (int q = lo; q < hi; ++q) {

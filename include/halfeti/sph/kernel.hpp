@@ -79,7 +79,7 @@ class KernelEvaluator {
   }
 
   // W and F for n squared distances at once, r = sqrt(r2[m]): the same values as operator() on each, in a loop
-  // the compiler turns into vector instructions (sqrt and division two or four at a time).
+  // the compiler turns into vector instructions (sqrt and division two, four or eight at a time).
   void batch(const double* r2, int n, double* w, double* f) const {
     if (cubic_) {
       for (int m = 0; m < n; ++m) {

@@ -77,9 +77,6 @@ struct PairList {
   void resize(std::size_t n) {
     j.resize(n); ex.resize(n); ey.resize(n); w.resize(n); f.resize(n);
   }
-  void reserve(std::size_t n) {
-    j.reserve(n); ex.reserve(n); ey.reserve(n); w.reserve(n); f.reserve(n);
-  }
   std::size_t size() const { return j.size(); }
   // No pairs for n particles (e.g. a scene without walls).
   static PairList none(int n) {

@@ -23,7 +23,10 @@ class TipSpring final : public halfeti::NodalElement {
       : node_(node), anchor_(anchor), k_(stiffness) {}
   std::vector<int> nodes() const override { return {node_}; }
   void evaluate(const std::vector<Eigen::Vector2d>& x, Eigen::VectorXd& f, Eigen::MatrixXd& k) override {
-    f = k_ * (x[0] - anchor_ - Eigen::Vector2d(0.05, 0.0));  // unstretched length 5 cm: no force at rest
+    const Eigen::Vector2d stretch = x[0] - anchor_ - Eigen::Vector2d(0.05, 0.0);  // unstretched length 5 cm
+    f.resize(2);  // element by element: a fixed 2-vector assigned to a dynamic one makes GCC 12 warn falsely
+    f(0) = k_ * stretch.x();
+    f(1) = k_ * stretch.y();
     k = k_ * Eigen::Matrix2d::Identity();
   }
 
