@@ -61,16 +61,7 @@ class KernelEvaluator {
   void operator()(double r, double& w, double& f) const {
     const double q = r * inv_h_;
     if (cubic_) {
-      // Both pieces, then a select: in a disordered flow q < 1 is a coin toss for the branch predictor, and the
-      // mispredictions cost more than the arithmetic (the same values as a branch would give, bit for bit).
-      const double a = 2.0 - q;
-      const double w_in = w0_ * (1.0 - 1.5 * q * q + 0.75 * q * q * q);
-      const double f_in = f0_ * (-3.0 + 2.25 * q);  // (dW/dr) / r = (w0 / h^2) (-3 q + 2.25 q^2) / q
-      const double w_out = w0_ * 0.25 * a * a * a;
-      const double f_out = -f0_ * 0.75 * a * a / q;  // not used at q = 0 (inner piece)
-      const bool inner = q < 1.0;
-      w = inner ? w_in : w_out;
-      f = inner ? f_in : f_out;
+      cubic(q, w, f);
     } else {
       const double a = 1.0 - 0.5 * q, a3 = a * a * a;
       w = w0_ * a3 * a * (2.0 * q + 1.0);
@@ -82,22 +73,27 @@ class KernelEvaluator {
   // the compiler turns into vector instructions (sqrt and division two, four or eight at a time).
   void batch(const double* r2, int n, double* w, double* f) const {
     if (cubic_) {
-      for (int m = 0; m < n; ++m) {
-        const double q = std::sqrt(r2[m]) * inv_h_, a = 2.0 - q;
-        const double w_in = w0_ * (1.0 - 1.5 * q * q + 0.75 * q * q * q);
-        const double f_in = f0_ * (-3.0 + 2.25 * q);
-        const double w_out = w0_ * 0.25 * a * a * a;
-        const double f_out = -f0_ * 0.75 * a * a / q;
-        const bool inner = q < 1.0;
-        w[m] = inner ? w_in : w_out;
-        f[m] = inner ? f_in : f_out;
-      }
+      for (int m = 0; m < n; ++m) cubic(std::sqrt(r2[m]) * inv_h_, w[m], f[m]);
     } else {
       for (int m = 0; m < n; ++m) operator()(std::sqrt(r2[m]), w[m], f[m]);
     }
   }
 
  private:
+  // The cubic spline at q = r / h, both of its pieces.
+  void cubic(double q, double& w, double& f) const {
+    // Both pieces, then a select: in a disordered flow q < 1 is a coin toss for the branch predictor, and the
+    // mispredictions cost more than the arithmetic (the same values as a branch would give, bit for bit).
+    const double a = 2.0 - q;
+    const double w_in = w0_ * (1.0 - 1.5 * q * q + 0.75 * q * q * q);
+    const double f_in = f0_ * (-3.0 + 2.25 * q);  // (dW/dr) / r = (w0 / h^2) (-3 q + 2.25 q^2) / q
+    const double w_out = w0_ * 0.25 * a * a * a;
+    const double f_out = -f0_ * 0.75 * a * a / q;  // not used at q = 0 (inner piece)
+    const bool inner = q < 1.0;
+    w = inner ? w_in : w_out;
+    f = inner ? f_in : f_out;
+  }
+
   bool cubic_;
   double inv_h_, w0_, f0_;
 };
