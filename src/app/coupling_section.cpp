@@ -43,7 +43,10 @@ std::shared_ptr<Schema> ssosd_schema() {
   auto s = std::make_shared<Schema>(
       "Shifting the surface of the structural domain (eqs. 22-23): particles in a layer of thickness "
       "L = layer_ratio * max(u_max, velocity_floor) * dt outside the plate are relocated by an exponential law.");
-  s->add(Key::boolean("enabled", "false: invaders are particles past the surface, pushed exactly onto it").def(true));
+  s->add(Key::boolean("enabled",
+                      "true: the paper's relocation (use it with plate_wall: false); false: invaders are particles "
+                      "past the surface, pushed exactly onto it (docs/coupling.md, section 15)")
+             .def(false));
   s->add(Key::real("layer_ratio", "L / (u_max dt), eq. 23's range").def(10.0).in(5.0, 50.0));
   s->add(Key::real("velocity_floor", "smallest u_max used for L (still water keeps a layer)", "m/s").def(0.5)
              .positive());
@@ -60,7 +63,7 @@ std::shared_ptr<const Schema> coupling_schema() {
     s->add(Key::choice("solver", "how eq. 21 is solved", solver_registry().names()).def("condensed"));
     s->add(Key::choice("velocity_update", "how the contact changes an invader's velocity",
                        velocity_registry().names())
-               .def("normal_stop"));
+               .def("acceleration"));
     s->add(Key::choice("mass_participation",
                        "invader mass participation in eq. 21: kick_drift (m/dt^2, consistent with the fluid's step, "
                        "inelastic) or constant_acceleration (the paper's 2m/dt^2)",
@@ -81,17 +84,25 @@ std::shared_ptr<const Schema> coupling_schema() {
                        "extrapolated to mid-step, second order) or lagged (as computed at the step's start)",
                        {"extrapolated", "lagged"})
                .def("extrapolated"));
+    s->add(Key::choice("added_mass",
+                       "the water's mass the plate's faces carry implicitly in the plate's step against a change of "
+                       "velocity: acoustic (rho0 c0 dt per face area, the water's impedance), layer "
+                       "(added_mass_layer spacings of water) or none (the exchange fully explicit)",
+                       {"acoustic", "layer", "none"})
+               .def("acoustic"));
     s->add(Key::real("added_mass_layer",
-                     "depth of the water layer, in particle spacings, whose mass the plate's faces carry implicitly "
-                     "in the plate's step against a change of velocity (stabilises the explicit plate-water "
-                     "exchange); 0: fully explicit",
+                     "with added_mass: layer, the depth of the water layer, in particle spacings, whose mass the "
+                     "plate's faces carry; 0: none",
                      "dx")
                .def(0.25)
                .in(0.0, 4.0));
     s->add(Key::section("ssosd", "the intermediate layer", ssosd_schema()).always());
-    s->add(Key::real("inside_tolerance", "depth past the surface at which a particle left inside stops the run",
+    s->add(Key::real("inside_tolerance",
+                     "depth past the surface at which a particle left inside stops the run (a shallower one is the "
+                     "next step's invader; pushed exactly onto a concave face, a particle can sit nanometres behind "
+                     "the neighbouring segment)",
                      "m")
-               .def(1e-9)
+               .def(1e-6)
                .positive());
     return std::shared_ptr<const Schema>(s);
   }();
@@ -109,6 +120,10 @@ coupling::CouplingParameters coupling_params(const scene::Node& root) {
   p.plate_wall_velocity = c.boolean("plate_wall_velocity");
   p.plate_wall_extrapolated = c.string("plate_wall_exchange") == "extrapolated";
   p.added_mass_layer = c.real("added_mass_layer");
+  const std::string added_mass = c.string("added_mass");
+  p.added_mass_kind = added_mass == "acoustic" ? coupling::CouplingParameters::AddedMass::kAcoustic
+                      : added_mass == "layer"  ? coupling::CouplingParameters::AddedMass::kLayer
+                                               : coupling::CouplingParameters::AddedMass::kNone;
   p.mass_participation = c.string("mass_participation") == "kick_drift" ? 1.0 : 2.0;
   const scene::Node s = c.section("ssosd");
   p.ssosd.enabled = s.boolean("enabled");

@@ -140,8 +140,62 @@ Registry<ProbeFactory> build_registry() {
         structure_probe([](const structure::PlateSolver& s) { return s.strain_energy(); }));
   r.add("structure_kinetic_energy", "kinetic energy of the plate per unit depth [J/m]", keys({}),
         structure_probe([](const structure::PlateSolver& s) { return s.kinetic_energy(); }));
+  r.add("structure_potential_energy", "the plate's potential energy in gravity from its reference shape [J/m]",
+        keys({}), structure_probe([](const structure::PlateSolver& s) { return s.gravity_potential_energy(); }));
   r.add("max_von_mises", "largest von Mises (Cauchy) stress in the plate [Pa]", keys({}),
         structure_probe([](const structure::PlateSolver& s) { return s.max_von_mises(); }));
+  r.add("plate_load",
+        "the water's force on the plate over the last step, by part, face and sign (docs/coupling.md, section 15) [N/m]",
+        keys({Key::choice("part", "plate-wall ghosts, contact, or both", {"wall", "contact", "all"}).def("all"),
+              Key::choice("face", "the plate's face (tank's view; top: the free end)", {"left", "right", "top", "all"})
+                  .def("all"),
+              Key::choice("sign", "the wall part pushing into the face, pulling it (suction), or both",
+                          {"push", "suction", "all"})
+                  .def("all"),
+              Key::choice("component", "which component", {"x", "y"}).required()}),
+        [](const scene::Node& p, Parts& parts) {
+          parts.require_structure(p.path());
+          if (!parts.coupling_params)
+            HALFETI_USER_ERROR(p.path() << ": this probe reads the plate-water coupling, but the scene has no water");
+          const std::string part = p.string("part"), face = p.string("face"), sign = p.string("sign");
+          if (part == "contact" && sign != "all")
+            HALFETI_USER_ERROR(p.key_path("sign") << ": '" << sign << "' splits the plate-wall part only; the contact only pushes");
+          const int c = p.string("component") == "x" ? 0 : 1;
+          const int f = face == "right" ? 0 : face == "top" ? 1 : face == "left" ? 2 : -1;
+          const bool wall = part != "contact", contact = part != "wall";
+          const bool push = sign != "suction", suction = sign != "push";
+          const Parts* owner = &parts;
+          return ProbeColumn{p.string("name"), [owner, c, f, wall, contact, push, suction](double) {
+                               const auto& b = owner->coupling->load_breakdown();
+                               double v = 0.0;
+                               for (int k = 0; k < 3; ++k) {
+                                 if (f >= 0 && k != f) continue;
+                                 if (wall && push) v += b.wall_push[k][c];
+                                 if (wall && suction) v += b.wall_suction[k][c];
+                                 if (contact) v += b.contact[k][c];
+                               }
+                               return v;
+                             }};
+        });
+  r.add("plate_load_work",
+        "the water's work on the plate since the start (docs/coupling.md, section 15) [J/m]",
+        keys({Key::choice("part", "plate-wall load, interface added mass, contact, or all",
+                          {"wall", "added_mass", "contact", "all"})
+                  .def("all")}),
+        [](const scene::Node& p, Parts& parts) {
+          parts.require_structure(p.path());
+          if (!parts.coupling_params)
+            HALFETI_USER_ERROR(p.path() << ": this probe reads the plate-water coupling, but the scene has no water");
+          const std::string part = p.string("part");
+          const Parts* owner = &parts;
+          return ProbeColumn{p.string("name"), [owner, part](double) {
+                               const auto& b = owner->coupling->load_breakdown();
+                               if (part == "wall") return b.work_wall;
+                               if (part == "added_mass") return b.work_added_mass;
+                               if (part == "contact") return b.work_contact;
+                               return b.work_wall + b.work_added_mass + b.work_contact;
+                             }};
+        });
   r.add("cable_tension", "tension of one real cable of a set, at one end: stress [Pa] or force [N]",
         keys({Key::string("cable", "cable name").required(),
               Key::choice("end", "which end", {"anchor", "plate"}).def("plate"),

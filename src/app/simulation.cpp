@@ -201,7 +201,9 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
   if (parts_.coupling_params) {
     auto& cp = *parts_.coupling_params;
     const auto& fluid = *parts_.fluid;
-    cp.added_mass = cp.added_mass_layer * fluid.params().density * fluid.params().spacing;
+    cp.density = fluid.params().density;
+    cp.sound_speed = fluid.sound_speed();
+    cp.spacing = fluid.params().spacing;
     parts_.coupling = std::make_unique<coupling::ContactCoupling>(comm_, parts_.plate.get(), cp);
     if (parts_.coupling_params->plate_wall) {
       parts_.fluid->set_plate_offsets(parts_.plate_offsets);
@@ -282,7 +284,7 @@ double Simulation::advance_coupled() {
   f.compute_forces();
   const double t = f.time(), dt = f.dt();
   const bool plate_wall = parts_.coupling->parameters().plate_wall;
-  if (plate_wall) parts_.coupling->set_fluid_loads(f.plate_wall_loads());  // the water's wall force on the plate
+  if (plate_wall) parts_.coupling->set_fluid_loads(f.plate_wall_loads(), dt);  // the water's wall force on the plate
   f.predict();
   if (parts_.plate) load_cables(t + dt);
   const coupling::InterfaceParticles view{f.owned_count(), f.gid().data(),  f.x().data(),

@@ -348,6 +348,14 @@ double PlateSolver::strain_energy() const {
   return sum_over_ranks(e);
 }
 
+double PlateSolver::gravity_potential_energy() const {
+  // The nodal masses are M's row sums (compute_external): for the uniform field g, -u^T M g exactly. Every node is
+  // on this rank (the plate's state is replicated), so no sum over ranks.
+  double e = 0.0;
+  for (int n = 0; n < node_count(); ++n) e -= mass_row_sum_(n) * params_.gravity.dot(u_.segment<2>(2 * n));
+  return e;
+}
+
 double PlateSolver::kinetic_energy() const {
   double e = 0.0;
   for (int k : partition_.owned_elements) {

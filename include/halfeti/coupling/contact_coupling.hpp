@@ -41,7 +41,7 @@ enum class VelocityUpdate { kAcceleration, kDisplacement, kNormalStop };
 
 struct CouplingParameters {
   ContactConstraint constraint = ContactConstraint::kTied;  // scene: coupling.constraint: tied | normal
-  VelocityUpdate velocity_update = VelocityUpdate::kNormalStop;  // scene: coupling.velocity_update
+  VelocityUpdate velocity_update = VelocityUpdate::kAcceleration;  // scene: coupling.velocity_update
   // Mass participation factor p in p m / dt^2 (scene: coupling.mass_participation): 1 = kick_drift (the fluid's
   // symplectic-Euler step: an impulse J moves a particle by dt J / m, so dv = C dt / m = dx / dt and the contact
   // is inelastic), 2 = constant_acceleration (the paper's 2/dt^2: dv = 2 dx / dt, an elastic bounce).
@@ -60,13 +60,30 @@ struct CouplingParameters {
   // mid-step, 1.5 F_n - 0.5 F_n-1, and the water the face's velocity extrapolated to mid-step, 2 v_n-1/2 - v_n-3/2
   // (second order in the lag of the explicit exchange); lagged: F_n and v_n-1/2 (docs/coupling.md, section 12).
   bool plate_wall_extrapolated = true;
-  // scene: coupling.added_mass_layer: depth, in particle spacings, of the water layer whose mass the plate's faces
-  // carry in the plate's step, normal to the face, on the step's change of velocity (docs/coupling.md, section 13);
-  // 0 = the plate-water exchange fully explicit.
-  double added_mass_layer = 0.25;
-  double added_mass = 0.0;  // kg/m^2 per face area: rho0 * added_mass_layer * dx, set by the application
+  // scene: coupling.added_mass: the water's mass the plate's faces carry in the plate's step, normal to the face,
+  // on the step's change of velocity (docs/coupling.md, sections 13 and 15):
+  //   kAcoustic: rho0 c0 dt per face area, the water a pressure wave reaches within the step: the face's change of
+  //              normal velocity dv meets the water's acoustic impedance, dp = rho0 c0 dv (a piston's response in a
+  //              compressible fluid), within the implicit step instead of one step later through the ghosts;
+  //   kLayer:    rho0 * added_mass_layer * dx (the former, chosen depth);
+  //   kNone:     the plate-water exchange fully explicit.
+  enum class AddedMass { kAcoustic, kLayer, kNone };
+  AddedMass added_mass_kind = AddedMass::kAcoustic;
+  double added_mass_layer = 0.25;  // scene: coupling.added_mass_layer, in particle spacings (kLayer)
+  double density = 1000.0;         // kg/m^3, the water's rho0, set by the application
+  double sound_speed = 0.0;        // m/s, the water's c0, set by the application
+  double spacing = 0.0;            // m, the water's dx, set by the application
+  // kg/m^2 per face area over a step of dt.
+  double added_mass_per_area(double dt) const {
+    switch (added_mass_kind) {
+      case AddedMass::kAcoustic: return density * sound_speed * dt;
+      case AddedMass::kLayer: return density * added_mass_layer * spacing;
+      case AddedMass::kNone: break;
+    }
+    return 0.0;
+  }
   SsosdParameters ssosd;   // scene: coupling.ssosd.{enabled,layer_ratio,velocity_floor}
-  double inside_tolerance = 1e-9;  // m, > 0: an invader ending deeper than this past the surface is an error
+  double inside_tolerance = 1e-6;  // m, > 0: an invader ending deeper than this past the surface is an error
   std::string options_prefix = "structure_contact_";  // PETSc options prefix of the contact KSP
 };
 
@@ -81,6 +98,20 @@ struct CouplingStepReport {
          force_y = 0.0;    // N/m, total contact force on the particles (the plate gets the opposite)
   double max_force = 0.0;  // N/m, largest |C| of one invader
   int released = 0;        // invaders released by the unilateral active set (they keep their predicted state)
+};
+
+// The water's force on the plate over the last step, by where and how it acts (docs/coupling.md, section 15): the
+// plate-wall ghosts' load (what the plate is handed at the step's start, before any extrapolation), split into the
+// parts that push into a face and those that pull it outwards (suction: the ghosts continue a particle's pressure,
+// so water in tension beside a face pulls it), and the contact's (eq. 21). Faces by the plate at rest: its top
+// (corners included) and the two sides. The work terms are the water's work on the plate since the start,
+// sum over steps of F . (x_n+1 - x_n) at the surface points: the plate-wall load as applied (extrapolated or not),
+// the interface added mass's spring (section 13) and the contact. Every rank holds the same numbers.
+struct PlateLoadBreakdown {
+  enum Face { kRight = 0, kTop = 1, kLeft = 2 };
+  double wall_push[3][2] = {}, wall_suction[3][2] = {};  // N/m, [face][x, y]
+  double contact[3][2] = {};                              // N/m, [face][x, y]
+  double work_wall = 0.0, work_added_mass = 0.0, work_contact = 0.0;  // J/m since the start
 };
 
 // The water's plate-wall force on one surface point over a step, as a nodal element of the plate: a dead load plus
@@ -99,6 +130,8 @@ class SurfacePointLoad : public NodalElement {
                   bool extrapolate);
   void set_time_step(double dt) { stiffness_ = added_mass_ / (dt * dt); }
   const Eigen::Vector2d& force() const { return force_; }
+  // The force the point gets at place x over the step: the water's load and the added mass's spring.
+  Eigen::Vector2d spring_force(const Eigen::Vector2d& x) const { return -stiffness_ * (x - rest_); }
   std::vector<int> nodes() const override { return {node_}; }
   void evaluate(const std::vector<Eigen::Vector2d>& x, Eigen::VectorXd& f, Eigen::MatrixXd& k) override {
     f = stiffness_ * (x[0] - rest_) - force_;  // external: enters the residual with the sign opposite to F_int
@@ -135,19 +168,22 @@ class ContactCoupling {
   // The same surface with its points' velocities and accelerations (for Fluid::set_plate_outline).
   sph::PlateOutline plate_outline() const;
   // Collective. The fluid's plate-wall loads of this rank (Fluid::plate_wall_loads()), applied to the plate over
-  // the next step(): gathered to the root, summed per surface point in (gid, point) order (rank-independent).
-  void set_fluid_loads(const std::vector<sph::PlateWallLoad>& local);
+  // the next step() of length dt: gathered to the root, summed per surface point in (gid, point) order
+  // (rank-independent).
+  void set_fluid_loads(const std::vector<sph::PlateWallLoad>& local, double dt);
   double fluid_load_x() const { return fluid_load_[0]; }  // N/m, total on the plate, every rank
   double fluid_load_y() const { return fluid_load_[1]; }
   const SurfacePolyline& surface() const { return surface_; }
 
   const CouplingStepReport& last_step() const { return last_; }
+  const PlateLoadBreakdown& load_breakdown() const { return breakdown_; }
   const ContactSolveReport& last_solve() const { return last_solve_; }  // root only (empty elsewhere)
   PhaseTimers timers() const;  // search, gather, assembly, solve, handback (assembly/solve: root only)
   const CouplingParameters& parameters() const { return params_; }
 
  private:
   void broadcast_surface();
+  void classify_faces();  // root: point_face_ and segment_face_ from the surface at rest
   // Root: the structure's part of step(); returns the corrections in gathered order.
   std::vector<InvaderCorrection> solve_on_root(double t, double dt, double layer,
                                                const std::vector<Invader>& inv);
@@ -156,6 +192,10 @@ class ContactCoupling {
   int rank_ = 0, root_ = 0;
   std::vector<std::unique_ptr<SurfacePointLoad>> loads_;  // root: one per surface point (clamped ones ignored)
   double fluid_load_[2] = {0.0, 0.0};
+  std::vector<int> point_face_;    // root: the face (PlateLoadBreakdown::Face) of each surface point at rest
+  std::vector<int> segment_face_;  // root: the same of each surface segment
+  PlateLoadBreakdown breakdown_;
+  std::vector<Eigen::Vector2d> previous_force_[3];  // root: each part's force per plate node at the last step's end
   std::vector<double> surface_motion_;             // every rank: vx, vy, ax, ay per surface point
   std::vector<double> mean_velocity_;              // every rank: vx, vy per surface point over the last step
   double thickness_ = 0.0;  // m, the plate's: bounds how deep inside an invader can be found

@@ -159,6 +159,7 @@ class PlateSolver {
   Eigen::Vector2d velocity(int node) const { return v_.segment<2>(2 * node); }
   double strain_energy() const;                 // J/m, solid elements
   double kinetic_energy() const;                // J/m, 1/2 v^T M v
+  double gravity_potential_energy() const;      // J/m, -sum_n m_n g . u_n: gravity's work undone since the reference
   double element_von_mises(int element) const;  // Pa, mean over the element's 3x3 (Q4: 2x2) points (Cauchy)
   double max_von_mises() const;                 // Pa, max over all points
   PhaseTimers& timers() { return timers_; }

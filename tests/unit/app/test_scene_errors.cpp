@@ -78,6 +78,8 @@ const Case kCases[] = {
      "bad.yaml:2:33: coupling.ssosd.layer_ratio: expected a number in [5, 50], found '60'"},
     {"interface added mass out of range", "scene: {name: s, end_time: 1}\ncoupling: {added_mass_layer: 5}\n",
      "bad.yaml:2:30: coupling.added_mass_layer: expected a number in [0, 4] (dx), found '5'"},
+    {"unknown interface added mass", "scene: {name: s, end_time: 1}\ncoupling: {added_mass: implicit}\n",
+     "bad.yaml:2:24: coupling.added_mass: expected one of acoustic, layer, none, found 'implicit'"},
     {"unknown plate-water exchange", "scene: {name: s, end_time: 1}\ncoupling: {plate_wall_exchange: implicit}\n",
      "bad.yaml:2:33: coupling.plate_wall_exchange: expected one of extrapolated, lagged, found 'implicit'"},
     {"broken YAML", "scene: {name: s, end_time: 1\n", "bad.yaml:2:1: not valid YAML: end of map flow not found"},
