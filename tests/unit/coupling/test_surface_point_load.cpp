@@ -54,3 +54,30 @@ TEST(SurfacePointLoad, AddedMassResistsAccelerationNormalToTheFaceOnly) {
   EXPECT_LT(tangential.norm(), 1e-6 * kMass * a);
   EXPECT_LT((tangent - Eigen::MatrixXd(added / (kDt * kDt))).norm(), 1e-9 * kMass / (kDt * kDt));
 }
+
+// The acoustic added mass (docs/coupling.md, section 15): with m_a = rho0 c0 dt per face area, a face whose normal
+// velocity changes by dv over the step meets the water's acoustic impedance, the force -rho0 c0 A dv n (a piston's
+// pressure jump rho0 c0 dv, Joukowsky), whatever the step; a tangential change meets nothing.
+TEST(SurfacePointLoad, AcousticAddedMassIsTheWatersImpedance) {
+  halfeti::coupling::CouplingParameters p;
+  p.density = 1000.0;
+  p.sound_speed = 35.0;
+  const double area = 8e-4;  // m^2/m: the point's share of the face
+  const Eigen::Vector2d n = Eigen::Vector2d(0.9, -0.3).normalized(), t(-n.y(), n.x());
+  const Eigen::Vector2d x0(0.1515, 0.04), v(0.2, -0.05), dv_n = 0.03 * n, dv_t = 0.05 * t;
+  for (double dt : {1e-5, 4e-5}) {
+    EXPECT_DOUBLE_EQ(p.added_mass_per_area(dt), 1000.0 * 35.0 * dt);
+    const Eigen::Matrix2d added = p.added_mass_per_area(dt) * area * n * n.transpose();
+    SurfacePointLoad l(2);
+    for (int step = 0; step < 2; ++step) l.start_step(Eigen::Vector2d::Zero(), x0 + step * dt * v, added, false);
+    l.set_time_step(dt);
+    const Eigen::Vector2d x_n = x0 + dt * v;
+    // v_n+1/2 = v + dv: the internal-force convention gives +rho0 c0 A (dv . n) n (the plate feels minus it).
+    const Eigen::Vector2d normal = evaluate(l, x_n + dt * (v + dv_n));
+    const Eigen::Vector2d expected = 1000.0 * 35.0 * area * dv_n;
+    EXPECT_LT((normal - expected).norm(), 1e-6 * expected.norm()) << normal.transpose() << " / " << expected.transpose();
+    EXPECT_LT(evaluate(l, x_n + dt * (v + dv_t)).norm(), 1e-6 * expected.norm());
+  }
+  p.added_mass_kind = halfeti::coupling::CouplingParameters::AddedMass::kNone;
+  EXPECT_EQ(p.added_mass_per_area(1e-5), 0.0);
+}
