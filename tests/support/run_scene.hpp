@@ -3,10 +3,12 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "halfeti/io/probe_writer.hpp"
 
@@ -23,6 +25,16 @@ inline int run_scene(const std::string& scene, const std::string& out, const std
          ".stdout 2>" + out + ".stderr";
   const int raw = std::system(cmd.c_str());
   return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+
+// Linear interpolation of a probe column v(t) at `when` (held constant beyond the ends).
+inline double interpolate(const std::vector<double>& t, const std::vector<double>& v, double when) {
+  const auto it = std::lower_bound(t.begin(), t.end(), when);
+  if (it == t.begin()) return v.front();
+  if (it == t.end()) return v.back();
+  const std::size_t k = static_cast<std::size_t>(it - t.begin());
+  const double f = (when - t[k - 1]) / (t[k] - t[k - 1]);
+  return (1.0 - f) * v[k - 1] + f * v[k];
 }
 
 inline std::string read_text(const std::string& path) {

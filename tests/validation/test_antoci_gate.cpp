@@ -35,15 +35,6 @@ Series read_measured(const std::string& path) {
   return s;
 }
 
-// Linear interpolation of a probe column at time t.
-double at(const std::vector<double>& t, const std::vector<double>& v, double when) {
-  const auto it = std::lower_bound(t.begin(), t.end(), when);
-  if (it == t.begin()) return v.front();
-  if (it == t.end()) return v.back();
-  const std::size_t k = static_cast<std::size_t>(it - t.begin());
-  const double f = (when - t[k - 1]) / (t[k] - t[k - 1]);
-  return (1.0 - f) * v[k - 1] + f * v[k];
-}
 
 }  // namespace
 
@@ -72,7 +63,7 @@ TEST(AntociGate, FreeEndFollowsTheExperiment) {
     const auto u = probes.column(names[c]);
     double sum = 0.0;
     for (std::size_t k = 0; k < m.t.size(); ++k) {
-      const double e = at(time, u, m.t[k]) - at(time, u, 0.0) - m.v[k];
+      const double e = test::interpolate(time, u, m.t[k]) - test::interpolate(time, u, 0.0) - m.v[k];
       sum += e * e;
     }
     rms[c] = std::sqrt(sum / static_cast<double>(m.t.size()));

@@ -28,15 +28,6 @@ constexpr double kLateLow = 0.017, kLateHigh = 0.020;   // m, published tip at 0
 constexpr double kTolerance = 0.05 * 0.0465;            // m, 5 % of the mid peak
 constexpr double kPeakTimeLow = 0.22, kPeakTimeHigh = 0.26, kTimeTolerance = 0.02;  // s
 
-double at(const std::vector<double>& t, const std::vector<double>& v, double when) {
-  const auto it = std::lower_bound(t.begin(), t.end(), when);
-  if (it == t.begin()) return v.front();
-  if (it == t.end()) return v.back();
-  const std::size_t k = static_cast<std::size_t>(it - t.begin());
-  const double f = (when - t[k - 1]) / (t[k] - t[k - 1]);
-  return (1.0 - f) * v[k - 1] + f * v[k];
-}
-
 }  // namespace
 
 TEST(DambreakPlate, TipFollowsThePublishedResultsAndTheEnergyBalanceCloses) {
@@ -47,7 +38,7 @@ TEST(DambreakPlate, TipFollowsThePublishedResultsAndTheEnergyBalanceCloses) {
   const auto probes = io::read_probe_csv(out + "/probes.csv");
   const auto t = probes.column("t"), tip = probes.column("tip_x");
   const auto peak = std::max_element(tip.begin(), tip.end());
-  const double peak_time = t[static_cast<std::size_t>(peak - tip.begin())], late = at(t, tip, 0.45);
+  const double peak_time = t[static_cast<std::size_t>(peak - tip.begin())], late = test::interpolate(t, tip, 0.45);
   std::printf("dambreak_plate dx L/40: first peak %.2f mm at %.3f s (published 45-48 mm at 0.22-0.26 s); tip at "
               "0.45 s %.2f mm (published 17-20 mm)\n",
               1e3 * *peak, peak_time, 1e3 * late);
@@ -81,7 +72,7 @@ TEST(DambreakPlate, TipFollowsThePublishedResultsAndTheEnergyBalanceCloses) {
             0)
       << test::read_text(former + ".stderr");
   const auto fp = io::read_probe_csv(former + "/probes.csv");
-  const double former_late = at(fp.column("t"), fp.column("tip_x"), 0.45);
+  const double former_late = test::interpolate(fp.column("t"), fp.column("tip_x"), 0.45);
   std::printf("dambreak_plate with the former contact (SSOSD, normal_stop): tip at 0.45 s %.2f mm\n", 1e3 * former_late);
   EXPECT_GT(former_late, kLateHigh + kTolerance);
 }
