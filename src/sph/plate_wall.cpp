@@ -293,14 +293,17 @@ void PlateWall::find_pairs(const double* x, const double* y, int n, const Kernel
     int best;
     double best_d, best_g, best_eta;
     closest_point(xi, yi, r, best, best_d, best_g, best_eta);
-    // Particles inside the plate (or on its surface) are the contact's (eqs. 19-23), not the wall's.
-    if (best < 0 || best_d >= r || best_g <= 0.0) continue;
-    // The wall normal at the particle: from its closest point to it (a face's normal in front of a face, radial
-    // round a corner, so that it turns continuously).
+    // Particles inside the plate are the contact's (eqs. 19-23), not the wall's. One on the surface is water: the
+    // contact puts the particles it pushes out exactly there (docs/coupling.md, section 15), and without the
+    // ghosts their half-empty support would push them straight back in.
+    if (best < 0 || best_d >= r || best_g < 0.0) continue;
     const double cx = o.x[best] + best_eta * (o.x[best + 1] - o.x[best]);
     const double cy = o.y[best] + best_eta * (o.y[best + 1] - o.y[best]);
     // The particle's row: the arc length of its closest point below the top corners (0 on the top).
     const double tx = o.x[best + 1] - o.x[best], ty = o.y[best + 1] - o.y[best], l = std::sqrt(tx * tx + ty * ty);
+    // The wall normal at the particle: from its closest point to it (a face's normal in front of a face, radial
+    // round a corner, so that it turns continuously); on the surface itself, the segment's outward normal.
+    const bool on_surface = best_d <= 1e-9 * dx_;
     const double arc = best < right_end_ ? arc_[best] - best_eta * l : best >= left_start_ ? arc_[best] + best_eta * l : 0.0;
     const int row = static_cast<int>(arc / dx_), rows = static_cast<int>(row_start_.size()) - 1;
     const std::size_t before = ghost_.size();
@@ -320,8 +323,8 @@ void PlateWall::find_pairs(const double* x, const double* y, int n, const Kernel
     if (ghost_.size() == before) continue;
     particle_.push_back(i);
     start_.push_back(static_cast<int>(ghost_.size()));
-    nx_.push_back((xi - cx) / best_d);
-    ny_.push_back((yi - cy) / best_d);
+    nx_.push_back(on_surface ? ty / l : (xi - cx) / best_d);
+    ny_.push_back(on_surface ? -tx / l : (yi - cy) / best_d);
     seg_.push_back(best);
     eta_.push_back(best_eta);
   }
