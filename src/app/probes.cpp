@@ -50,6 +50,13 @@ ProbeFactory structure_probe(Read read) {
   };
 }
 
+// The plate-water coupling's probes need both a plate and water.
+void require_coupling(const scene::Node& p, const Parts& parts) {
+  parts.require_structure(p.path());
+  if (!parts.coupling_params)
+    HALFETI_USER_ERROR(p.path() << ": this probe reads the plate-water coupling, but the scene has no water");
+}
+
 std::shared_ptr<Schema> keys(std::vector<Key> list) {
   auto s = std::make_shared<Schema>();
   for (auto& k : list) s->add(std::move(k));
@@ -154,9 +161,7 @@ Registry<ProbeFactory> build_registry() {
                   .def("all"),
               Key::choice("component", "which component", {"x", "y"}).required()}),
         [](const scene::Node& p, Parts& parts) {
-          parts.require_structure(p.path());
-          if (!parts.coupling_params)
-            HALFETI_USER_ERROR(p.path() << ": this probe reads the plate-water coupling, but the scene has no water");
+          require_coupling(p, parts);
           const std::string part = p.string("part"), face = p.string("face"), sign = p.string("sign");
           if (part == "contact" && sign != "all")
             HALFETI_USER_ERROR(p.key_path("sign") << ": '" << sign << "' splits the plate-wall part only; the contact only pushes");
@@ -183,9 +188,7 @@ Registry<ProbeFactory> build_registry() {
                           {"wall", "added_mass", "contact", "all"})
                   .def("all")}),
         [](const scene::Node& p, Parts& parts) {
-          parts.require_structure(p.path());
-          if (!parts.coupling_params)
-            HALFETI_USER_ERROR(p.path() << ": this probe reads the plate-water coupling, but the scene has no water");
+          require_coupling(p, parts);
           const std::string part = p.string("part");
           const Parts* owner = &parts;
           return ProbeColumn{p.string("name"), [owner, part](double) {

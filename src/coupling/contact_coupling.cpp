@@ -51,31 +51,15 @@ ContactCoupling::ContactCoupling(MPI_Comm world, structure::PlateSolver* solver,
       loads_.push_back(std::make_unique<SurfacePointLoad>(node));
       solver_->add_nodal_element(loads_.back().get());
     }
-    classify_faces();
+    const auto corners = sph::outline_corners(plate_outline());
+    if (corners.first > 0 && corners.second > corners.first) {  // else everything counts as the top
+      corners_[0] = corners.first;
+      corners_[1] = corners.second;
+      const Eigen::Vector2d d = surface_.points[1] - surface_.points[0];
+      first_face_ = d.y() > 0.0 ? PlateLoadBreakdown::kRight : PlateLoadBreakdown::kLeft;  // outward (t_y, -t_x)
+      second_face_ = d.y() > 0.0 ? PlateLoadBreakdown::kLeft : PlateLoadBreakdown::kRight;
+    }
   }
-}
-
-void ContactCoupling::classify_faces() {
-  // The outline runs up one face, across the end and down the other (section 2); its two turns by more than 45
-  // degrees are the end's corners, which count with the end. The first face is the tank's right one when its
-  // outward normal points to +x (the standing plate), else the left one (the hanging plate).
-  const auto& p = surface_.points;
-  const int n = static_cast<int>(p.size());
-  std::vector<int> turns;
-  for (int k = 1; k + 1 < n; ++k) {
-    const Eigen::Vector2d a = p[k] - p[k - 1], b = p[k + 1] - p[k];
-    if (a.dot(b) < std::sqrt(0.5) * a.norm() * b.norm()) turns.push_back(k);
-  }
-  point_face_.assign(n, PlateLoadBreakdown::kTop);
-  if (turns.size() != 2) return;  // not a plate's outline: everything counts as the end
-  const Eigen::Vector2d d = p[1] - p[0];
-  const bool first_is_right = d.y() / d.norm() > 0.0;  // outward normal (t_y, -t_x): +x when going up
-  const int first = first_is_right ? PlateLoadBreakdown::kRight : PlateLoadBreakdown::kLeft;
-  const int second = first_is_right ? PlateLoadBreakdown::kLeft : PlateLoadBreakdown::kRight;
-  for (int k = 0; k < n; ++k) point_face_[k] = k < turns[0] ? first : k > turns[1] ? second : PlateLoadBreakdown::kTop;
-  segment_face_.assign(n > 0 ? n - 1 : 0, PlateLoadBreakdown::kTop);
-  for (int s = 0; s + 1 < n; ++s)
-    segment_face_[s] = s < turns[0] ? first : s >= turns[1] ? second : PlateLoadBreakdown::kTop;
 }
 
 sph::PlateOutline ContactCoupling::plate_outline() const {
@@ -123,11 +107,13 @@ void ContactCoupling::set_fluid_loads(const std::vector<sph::PlateWallLoad>& loc
     std::vector<Eigen::Vector2d> load(loads_.size(), Eigen::Vector2d::Zero());
     const auto& pts = surface_.points;
     const std::size_t last = pts.size() - 1;
-    // The outward normal at a surface point: from its neighbours (one segment at the polyline's ends).
-    auto point_normal = [&](std::size_t k) {
+    // The outward normal at each surface point: from its neighbours (radial at a corner; one segment at the
+    // polyline's ends, the clamped base corners).
+    std::vector<Eigen::Vector2d> normal(pts.size());
+    for (std::size_t k = 0; k <= last; ++k) {
       const Eigen::Vector2d t = pts[std::min(k + 1, last)] - pts[k == 0 ? 0 : k - 1];
-      return Eigen::Vector2d(t.y(), -t.x()).normalized();
-    };
+      normal[k] = Eigen::Vector2d(t.y(), -t.x()).normalized();
+    }
     for (auto& face : breakdown_.wall_push) face[0] = face[1] = 0.0;
     for (auto& face : breakdown_.wall_suction) face[0] = face[1] = 0.0;
     for (int k : order) {  // gid order: a fixed summation order on any number of ranks
@@ -139,22 +125,20 @@ void ContactCoupling::set_fluid_loads(const std::vector<sph::PlateWallLoad>& loc
       const Eigen::Vector2d f(all[4 * k + 2], all[4 * k + 3]);
       load[p] += f;
       // Push: the force on the plate points into it (against the outward normal); suction: out of it.
-      double* part = f.dot(point_normal(p)) <= 0.0 ? breakdown_.wall_push[point_face_[p]]
-                                                   : breakdown_.wall_suction[point_face_[p]];
+      const int face = point_face(static_cast<int>(p));
+      double* part = f.dot(normal[p]) <= 0.0 ? breakdown_.wall_push[face] : breakdown_.wall_suction[face];
       part[0] += f.x();
       part[1] += f.y();
     }
     const double mass_per_area = params_.added_mass_per_area(dt);
     for (std::size_t k = 0; k < loads_.size(); ++k) {
       auto& l = *loads_[k];
-      // The interface added mass on this point (section 13): normal from its neighbours (radial at a corner), half
-      // of each neighbouring segment's length. The polyline's ends are the clamped base corners.
+      // The interface added mass on this point (sections 13, 15): along its normal, on half of each neighbouring
+      // segment's length; none on the clamped base corners.
       Eigen::Matrix2d added_mass = Eigen::Matrix2d::Zero();
       if (k > 0 && k < last && mass_per_area > 0.0) {
-        const Eigen::Vector2d t = pts[k + 1] - pts[k - 1];
-        const Eigen::Vector2d n = Eigen::Vector2d(t.y(), -t.x()).normalized();
         const double length = 0.5 * ((pts[k] - pts[k - 1]).norm() + (pts[k + 1] - pts[k]).norm());
-        added_mass = mass_per_area * length * n * n.transpose();
+        added_mass = mass_per_area * length * normal[k] * normal[k].transpose();
       }
       l.start_step(load[k], pts[k], added_mass, params_.plate_wall_extrapolated);
       sum[0] += load[k].x();
@@ -221,32 +205,33 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
   // step's start and end times the node's displacement over it, the discrete work of the trapezoidal rule (with
   // gamma = 1/2 the plate's energy then changes by exactly this; with gamma > 1/2 the difference is the Newmark
   // dissipation).
-  auto add_work = [&](const std::vector<Eigen::Vector2d> (&now)[3]) {
+  auto add_work = [&] {
     double* work[3] = {&breakdown_.work_wall, &breakdown_.work_added_mass, &breakdown_.work_contact};
     for (int part = 0; part < 3; ++part) {
+      auto& now = nodal_force_[part];
       auto& before = previous_force_[part];
-      if (before.size() != now[part].size()) before.assign(now[part].size(), Eigen::Vector2d::Zero());
-      for (std::size_t node = 0; node < now[part].size(); ++node) {
+      if (before.size() != now.size()) before.assign(now.size(), Eigen::Vector2d::Zero());
+      for (std::size_t node = 0; node < now.size(); ++node) {
         const Eigen::Vector2d step = solver_->displacement().segment<2>(2 * node) - u_before.segment<2>(2 * node);
-        *work[part] += 0.5 * (before[node] + now[part][node]).dot(step);
+        *work[part] += 0.5 * (before[node] + now[node]).dot(step);
       }
-      before = now[part];
+      before.swap(now);
     }
   };
-  std::vector<Eigen::Vector2d> nodal[3];  // wall, added mass, contact: the force on each plate node at the end
-  for (auto& v : nodal) v.assign(static_cast<std::size_t>(solver_->node_count()), Eigen::Vector2d::Zero());
+  // Each part's force on the plate's nodes at the step's end (reused buffers).
+  for (auto& v : nodal_force_) v.assign(static_cast<std::size_t>(solver_->node_count()), Eigen::Vector2d::Zero());
   auto add_surface_forces = [&] {
     for (auto& l : loads_) {
       const int node = l->nodes()[0];
-      nodal[0][node] += l->force();
-      nodal[1][node] += l->spring_force(solver_->position(node));
+      nodal_force_[0][node] += l->force();
+      nodal_force_[1][node] += l->spring_force(solver_->position(node));
     }
   };
   if (gathered.empty()) {
     solver_->step(t, dt);  // nothing touches the plate: its own Newton loop
     last_.newton_iterations = solver_->last_step().newton_iterations;
     add_surface_forces();
-    add_work(nodal);
+    add_work();
     return corrections;
   }
   // Frozen data of the step from the surface at the start of the step (the plate's predictor is u_n):
@@ -262,7 +247,8 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
     const ContactPoint c = before.closest_within_reach(x);  // found by the same search on the owner: in reach
     HALFETI_CHECK(c.segment >= 0, "invader " << g.gid << " out of the search's reach");
     invaders.push_back({x, g.mass, c.segment, c.projection.eta, relocated_gap(c.projection.gap, layer)});
-    if (std::getenv("HALFETI_TRACE_COUPLING"))
+    static const bool trace = std::getenv("HALFETI_TRACE_COUPLING") != nullptr;  // one line per invader
+    if (trace)
       std::fprintf(stderr, "invader t=%.6f gid=%lld x=(%.7f, %.7f) seg=%d eta=%.4f gap=%.3e m=%.3e\n", t,
                    static_cast<long long>(g.gid), g.x, g.y, c.segment, c.projection.eta, c.projection.gap, g.mass);
     predicted_gap.push_back(c.projection.gap);
@@ -301,16 +287,15 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
   for (std::size_t j = 0; j < active.size(); ++j) {
     const ContactInvader& c = invaders[static_cast<std::size_t>(active[j])];
     const Eigen::Vector2d on_plate = -system_->forces()[j];
-    const int face = c.segment < static_cast<int>(segment_face_.size()) ? segment_face_[c.segment] : PlateLoadBreakdown::kTop;
+    const int face = segment_face(c.segment);
     breakdown_.contact[face][0] += on_plate.x();
     breakdown_.contact[face][1] += on_plate.y();
     const auto& seg = segments[static_cast<std::size_t>(c.segment)];
     const double eta = std::clamp(c.eta, 0.0, 1.0);
-    nodal[2][seg.first] += (1.0 - eta) * on_plate;
-    nodal[2][seg.second] += eta * on_plate;
+    nodal_force_[2][seg.first] += (1.0 - eta) * on_plate;
+    nodal_force_[2][seg.second] += eta * on_plate;
   }
-
-  add_work(nodal);
+  add_work();
 
   // Health: no invader may stay past the (new) surface.
   const SurfacePolyline after = ContactSystem::surface(*solver_);

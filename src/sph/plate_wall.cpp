@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 #include "halfeti/core/error.hpp"
 #include "halfeti/sph/neighbour_list.hpp"
@@ -26,6 +27,8 @@ int corner(const PlateOutline& o, bool backwards) {
 }
 }  // namespace
 
+std::pair<int, int> outline_corners(const PlateOutline& o) { return {corner(o, false), corner(o, true)}; }
+
 void PlateWall::offset_outline(const PlateOutline& o, double dx) {
   const int n = static_cast<int>(o.size());
   point_.resize(n);
@@ -34,8 +37,7 @@ void PlateWall::offset_outline(const PlateOutline& o, double dx) {
   // The corners: found on the first outline (the plate at rest, its top turning by 90 degrees) and kept, since
   // the surface's topology never changes (a strongly bent plate can turn by more than 45 degrees elsewhere).
   if (n != corner_points_) {
-    corner_right_ = corner(o, false);
-    corner_left_ = corner(o, true);
+    std::tie(corner_right_, corner_left_) = outline_corners(o);
     corner_points_ = n;
     HALFETI_CHECK(corner_right_ > 0 && corner_left_ > corner_right_ && corner_right_ == n - 1 - corner_left_,
                   "the plate's outline must run up one face, across the top and down the other with as many "

@@ -183,7 +183,9 @@ class ContactCoupling {
 
  private:
   void broadcast_surface();
-  void classify_faces();  // root: point_face_ and segment_face_ from the surface at rest
+  // The face (PlateLoadBreakdown::Face) of surface point k and of segment s = (k, k + 1), from the corners at rest.
+  int point_face(int k) const { return k < corners_[0] ? first_face_ : k > corners_[1] ? second_face_ : PlateLoadBreakdown::kTop; }
+  int segment_face(int s) const { return s < corners_[0] ? first_face_ : s >= corners_[1] ? second_face_ : PlateLoadBreakdown::kTop; }
   // Root: the structure's part of step(); returns the corrections in gathered order.
   std::vector<InvaderCorrection> solve_on_root(double t, double dt, double layer,
                                                const std::vector<Invader>& inv);
@@ -192,10 +194,13 @@ class ContactCoupling {
   int rank_ = 0, root_ = 0;
   std::vector<std::unique_ptr<SurfacePointLoad>> loads_;  // root: one per surface point (clamped ones ignored)
   double fluid_load_[2] = {0.0, 0.0};
-  std::vector<int> point_face_;    // root: the face (PlateLoadBreakdown::Face) of each surface point at rest
-  std::vector<int> segment_face_;  // root: the same of each surface segment
+  // The outline's corners at rest (sph::outline_corners) and which tank face its first and second faces are: the
+  // first runs up the tank's right face on a standing plate, down its left face on a hanging one.
+  int corners_[2] = {-1, -1};
+  int first_face_ = PlateLoadBreakdown::kTop, second_face_ = PlateLoadBreakdown::kTop;
   PlateLoadBreakdown breakdown_;
-  std::vector<Eigen::Vector2d> previous_force_[3];  // root: each part's force per plate node at the last step's end
+  // Root: each part's force (wall, added mass, contact) per plate node at the step's end, and at the last step's.
+  std::vector<Eigen::Vector2d> nodal_force_[3], previous_force_[3];
   std::vector<double> surface_motion_;             // every rank: vx, vy, ax, ay per surface point
   std::vector<double> mean_velocity_;              // every rank: vx, vy per surface point over the last step
   double thickness_ = 0.0;  // m, the plate's: bounds how deep inside an invader can be found

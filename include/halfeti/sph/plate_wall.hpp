@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "halfeti/sph/kernel.hpp"
@@ -21,6 +22,10 @@ struct PlateOutline {
   std::vector<double> x, y, vx, vy, ax, ay;
   std::size_t size() const { return x.size(); }
 };
+
+// The top corners of a plate's outline: the first point, from the start (first) and from the end (second), where
+// the polyline turns by more than 45 degrees; -1 where there is none.
+std::pair<int, int> outline_corners(const PlateOutline& o);
 
 // Load of one particle on one surface point (N/m), from the plate-wall term of the last force computation.
 struct PlateWallLoad {

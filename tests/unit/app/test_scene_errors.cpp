@@ -157,6 +157,14 @@ TEST(SceneErrors, ChecksAcrossKeysNameTheFileAndKey) {
       {"scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0.1], orientation: hanging, time_step: 0.001}\n"
        "probes: [{name: p, kind: displacement, node: top_right, component: x}]\n",
        "probes[0].node: no plate node named 'top_right'"},
+      // The plate-water coupling's probes need water and a plate; the contact has no suction to split off.
+      {"scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
+       "fluid: {spacing: 0.005, water: [{from: [0, 0], to: [0.3, 0.1]}]}\nstructure: {base: [0.15, 0]}\n"
+       "probes: [{name: c, kind: plate_load, part: contact, sign: push, component: x}]\n",
+       "probes[0].sign: 'push' splits the plate-wall part only; the contact only pushes"},
+      {"scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0], time_step: 0.001}\n"
+       "probes: [{name: w, kind: plate_load_work}]\n",
+       "probes[0]: this probe reads the plate-water coupling, but the scene has no water"},
   };
   for (const auto& c : cases) {
     const std::string path = dir + "/cross.yaml";
