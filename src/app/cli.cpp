@@ -1,5 +1,8 @@
 #include "halfeti/app/cli.hpp"
 
+#include <cmath>
+#include <cstdlib>
+
 #include "halfeti/core/error.hpp"
 #include "halfeti/core/version.hpp"
 
@@ -9,7 +12,8 @@ std::string usage_text() {
   return R"(halfeti: submerged elastic plate, cables and sloshing water under earthquakes (delta-SPH + FE + contact)
 
 usage:
-  halfeti run SCENE.yaml [--set key.path=value ...] [--out DIR] [-- PETSc options]
+  halfeti run SCENE.yaml [--set key.path=value ...] [--out DIR] [--restart PATH] [--overwrite]
+              [--max-wall SECONDS] [-- PETSc options]
   halfeti check SCENE.yaml [--set key.path=value ...]
   halfeti cable --from X1,Y1 --to X2,Y2 --modulus E --area A --density RHO
                 (--unstretched-length L0 | --tension-stress S) [...]   (halfeti cable --help)
@@ -20,8 +24,16 @@ run      runs the scene; outputs go to DIR (default out/<scene.name>): probes.cs
          scene.resolved.yaml, fields/ (HDF5 + XDMF) and checkpoints/.
 check    checks the scene (keys, types, ranges, files it names) and prints the resolved scene.
 --set    overrides one key before checking, e.g. --set fluid.spacing=0.002 --set probes.0.at=[0.3,0.005]
+--restart  continues a run from a checkpoint file, or from the latest checkpoint of a run folder; the scene (with
+         the same --set) may change only scene.end_time, scene.description and output.*. Into the run's own
+         folder (--out the same) it continues probes.csv, the fields and log.txt; bit for bit the run that never
+         stopped, on any number of ranks.
+--overwrite  replaces another run's outputs in DIR (a run refuses a folder that holds them otherwise)
+--max-wall   stops at a step boundary, with a checkpoint, before SECONDS of wall time (as SIGTERM, SIGINT and
+         SIGUSR1 do at any time), with exit status 5
 
-exit status: 0 success, 2 bad input (scene, file, option), 3 numerical failure, 4 internal error.
+exit status: 0 success, 2 bad input (scene, file, option), 3 numerical failure, 4 internal error, 5 stopped by a
+signal or --max-wall (resumable with --restart), 6 an output could not be written (disk full, permission).
 )";
 }
 
@@ -72,6 +84,16 @@ Command parse_command_line(const std::vector<std::string>& args) {
       c.overrides.push_back(a.substr(6));
     } else if (a == "--out" && c.kind == Command::Kind::kRun) {
       c.out_dir = value("--out");
+    } else if (a == "--restart" && c.kind == Command::Kind::kRun) {
+      c.restart = value("--restart");
+    } else if (a == "--overwrite" && c.kind == Command::Kind::kRun) {
+      c.overwrite = true;
+    } else if (a == "--max-wall" && c.kind == Command::Kind::kRun) {
+      const std::string& v = value("--max-wall");
+      char* end = nullptr;
+      c.max_wall = std::strtod(v.c_str(), &end);
+      if (end == v.c_str() || *end != '\0' || !(c.max_wall > 0.0) || !std::isfinite(c.max_wall))
+        HALFETI_USER_ERROR("--max-wall takes a positive number of seconds, got '" << v << "'");
     } else if (!a.empty() && a[0] == '-') {
       HALFETI_USER_ERROR("unknown option '" << a << "' for 'halfeti " << word << "'; try 'halfeti --help'");
     } else if (c.scene.empty()) {

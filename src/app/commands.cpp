@@ -49,10 +49,16 @@ int execute(const std::vector<std::string>& args, MPI_Comm comm) {
         HALFETI_USER_ERROR("PETSc options were given after '--', but the scene has no structure to use them");
       std::unique_ptr<PetscSession> petsc;
       if (s.root().has("structure")) petsc = std::make_unique<PetscSession>(cmd.petsc_args);
-      RunOptions opts{cmd.out_dir, cmd.petsc_args, true};
+      RunOptions opts;
+      opts.out_dir = cmd.out_dir;
+      opts.petsc_args = cmd.petsc_args;
+      opts.restart = cmd.restart;
+      opts.overwrite = cmd.overwrite;
+      opts.max_wall = cmd.max_wall;
+      opts.command_line = "halfeti";
+      for (const auto& a : args) opts.command_line += " " + a;
       Simulation sim(comm, std::move(s), opts);
-      sim.run();
-      return 0;
+      return sim.run();
     }
   }
   return 0;

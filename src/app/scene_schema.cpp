@@ -25,9 +25,15 @@ std::shared_ptr<Schema> output_schema() {
   auto s = std::make_shared<Schema>("When outputs are written (simulated time).");
   s->add(Key::real("probe_interval", "time between rows of probes.csv", "s").def(0.005).positive());
   s->add(Key::real("field_interval", "time between field files (0: none)", "s").def(0.05).non_negative());
-  s->add(Key::real("checkpoint_interval", "time between checkpoints (0: only at the end and on failure)", "s")
+  s->add(Key::real("checkpoint_interval",
+                   "time between checkpoints (0: only at the end, at a stop and on failure); a run continues from one "
+                   "with --restart",
+                   "s")
              .def(0.0)
              .non_negative());
+  s->add(Key::integer("checkpoint_keep", "how many of the newest checkpoints stay in checkpoints/ (0: all)")
+             .def(2)
+             .at_least(0));
   s->add(Key::real("progress_interval", "time between progress lines (0: 50 lines per run)", "s").def(0.0)
              .non_negative());
   return s;

@@ -1,17 +1,24 @@
 #include "halfeti/app/simulation.hpp"
 
 #include <algorithm>
+#include <unistd.h>
+
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <sstream>
 
 #include "halfeti/app/coupling_section.hpp"
 #include "halfeti/app/fluid_section.hpp"
+#include "halfeti/app/restart.hpp"
+#include "halfeti/core/collective.hpp"
 #include "halfeti/core/error.hpp"
 #include "halfeti/core/version.hpp"
 #include "halfeti/excitation/excitation_scene.hpp"
+#include "halfeti/io/checkpoint.hpp"
 #include "halfeti/io/json.hpp"
 
 namespace halfeti::app {
@@ -41,25 +48,31 @@ std::string format(const char* fmt, double a) {
   return buf;
 }
 
-// The structure solves on its own ranks (world rank 0 among them, and the plate's failures are raised on all of
-// them together); its failure must stop every rank together (no rank may be left waiting in a collective call),
-// so the structure's ranks run `work`, then rank 0 shares the outcome.
+// The structure solves on its own ranks (world rank 0 among them); its failure must stop every rank together (no
+// rank may be left waiting in a collective call).
 template <class Work>
 void on_structure_rank(MPI_Comm comm, bool structure_rank, Work&& work) {
-  std::string failure;
-  if (structure_rank) {
-    try {
-      work();
-    } catch (const NumericalError& e) {
-      failure = e.what();
-    }
+  collective_outcome(comm, 0, structure_rank, work);
+}
+
+// The signal a run was asked to stop by (0: none), set by the handler, read at each step's end.
+volatile std::sig_atomic_t g_stop_signal = 0;
+extern "C" void request_stop(int signal) { g_stop_signal = signal; }
+
+const char* signal_name(int s) {
+  switch (s) {
+    case SIGTERM: return "SIGTERM";
+    case SIGINT: return "SIGINT";
+    case SIGUSR1: return "SIGUSR1";
+    default: return "a signal";
   }
-  int n = static_cast<int>(failure.size());
-  MPI_Bcast(&n, 1, MPI_INT, 0, comm);
-  if (n == 0) return;
-  failure.resize(static_cast<size_t>(n));
-  MPI_Bcast(failure.data(), n, MPI_CHAR, 0, comm);
-  throw NumericalError(failure);
+}
+
+std::string utc_now() {
+  const std::time_t now = std::time(nullptr);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+  return buf;
 }
 
 }  // namespace
@@ -171,32 +184,62 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
   MPI_Comm_size(comm_, &size_);
   const scene::Node root = scene_.root();
   out_dir_ = options_.out_dir.empty() ? "out/" + root.section("scene").string("name") : options_.out_dir;
-  // The folders are made on rank 0 and the outcome shared, so a bad --out is one error on every rank.
-  int ok = 1;
-  std::string why;
-  if (rank_ == 0) {
-    try {
-      for (const char* sub : {"", "/fields", "/checkpoints"}) io::make_directories(out_dir_ + sub);
-    } catch (const UserError& e) {
-      ok = 0;
-      why = e.what();
-    }
+
+  // A restart reads its checkpoint on every rank and refuses a scene that changes the physics.
+  std::unique_ptr<io::Checkpoint> checkpoint;
+  if (!options_.restart.empty()) {
+    restart_path_ = io::resolve_checkpoint(options_.restart);
+    checkpoint = std::make_unique<io::Checkpoint>(io::read_checkpoint(restart_path_));
+    const auto scene_text = checkpoint->texts.find("scene");
+    if (scene_text == checkpoint->texts.end())
+      HALFETI_USER_ERROR("restart: '" << restart_path_ << "' holds no scene");
+    const std::string changed = changed_physics_key(scene_text->second, scene_.resolved_text());
+    if (!changed.empty())
+      HALFETI_USER_ERROR(scene_.file << ": the scene changes " << changed << " from the checkpoint '" << restart_path_
+                                     << "'; a continued run may change only scene.end_time, scene.description and "
+                                        "output.*");
+    const double end = root.section("scene").real("end_time");
+    if (!(checkpoint->time < end))
+      HALFETI_USER_ERROR("restart: the checkpoint is at t = " << checkpoint->time << " s, not before scene.end_time = "
+                                                              << end << " s (raise it with --set scene.end_time=...)");
   }
-  MPI_Bcast(&ok, 1, MPI_INT, 0, comm_);
-  if (!ok) throw UserError(rank_ == 0 ? why : "cannot create the output folder '" + out_dir_ + "'");
+
+  // The folder: made on rank 0, the outcome shared. It must not hold another run's outputs (unless --overwrite
+  // clears them, or this run continues the run it holds).
+  continuing_ = false;
+  collective_outcome(comm_, 0, rank_ == 0, [&] {
+    for (const char* sub : {"", "/fields", "/checkpoints"}) io::make_directories(out_dir_ + sub);
+    continuing_ = checkpoint && same_folder(out_dir_, run_folder_of(restart_path_));
+    if (continuing_) {
+      // Checkpoints after the one continued from belong to the run being replaced.
+      for (const auto& f : io::list_checkpoints(out_dir_ + "/checkpoints"))
+        if (f > out_dir_ + "/checkpoints/" + io::checkpoint_file_name(checkpoint->steps)) std::remove(f.c_str());
+      return;
+    }
+    const auto earlier = run_outputs(out_dir_);
+    if (earlier.empty()) return;
+    if (!options_.overwrite)
+      HALFETI_USER_ERROR("'" << out_dir_ << "' holds the outputs of another run (" << earlier.front()
+                             << (earlier.size() > 1 ? ", ..." : "")
+                             << "); give --overwrite to replace them, --restart " << out_dir_
+                             << " to continue that run, or another --out");
+    for (const auto& f : earlier)
+      if (std::remove(f.c_str()) != 0) HALFETI_IO_ERROR("--overwrite: cannot remove '" << f << "': " << std::strerror(errno));
+  });
+  int flag = continuing_ ? 1 : 0;
+  MPI_Bcast(&flag, 1, MPI_INT, 0, comm_);
+  continuing_ = flag != 0;
 
   probes_ = build_parameters(scene_, parts_);
   if (parts_.fluid_params) {
     ScopedTimer timer(timers_, "setup");
     parts_.fluid = std::make_unique<sph::Fluid>(comm_, *parts_.fluid_params, parts_.motion.get());
     fluid_fields_ = std::make_unique<io::FieldSeries>(comm_, out_dir_ + "/fields", "fluid");
-    checkpoints_ = std::make_unique<io::FieldSeries>(comm_, out_dir_ + "/checkpoints", "fluid_state");
   }
   if (parts_.structure_setup) {
     ScopedTimer timer(timers_, "setup");
     build_structure(parts_, comm_);
     plate_fields_ = std::make_unique<io::FieldSeries>(comm_, out_dir_ + "/fields", "plate");
-    plate_checkpoints_ = std::make_unique<io::FieldSeries>(comm_, out_dir_ + "/checkpoints", "plate_state");
   }
   if (parts_.coupling_params) {
     auto& cp = *parts_.coupling_params;
@@ -212,13 +255,92 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
       parts_.fluid->set_barriers(parts_.coupling->outline());
     }
   }
+  if (checkpoint) {
+    ScopedTimer timer(timers_, "restart");
+    restore(*checkpoint);
+  }
   std::vector<std::string> names;
   for (const auto& p : probes_) names.push_back(p.name);
-  probe_out_ = std::make_unique<io::ProbeWriter>(out_dir_ + "/probes.csv", names, rank_ == 0);
-  log_ = std::make_unique<io::RunLog>(out_dir_ + "/log.txt", rank_ == 0, options_.echo);
-  if (rank_ == 0) {
-    std::ofstream resolved(out_dir_ + "/scene.resolved.yaml");
-    resolved << "# resolved by halfeti " << kVersion << " from " << scene_.file << "\n" << scene_.resolved_text();
+  // A continued run carries the probe rows up to the checkpoint (from its own folder or the one it came from),
+  // continues the field series in its own folder, and appends to its log.
+  std::vector<std::string> carried;
+  collective_outcome(comm_, 0, rank_ == 0, [&] {
+    if (checkpoint)
+      carried = probe_rows_until(run_folder_of(restart_path_) + "/probes.csv", io::ProbeWriter::header(names), t_);
+  });
+  probe_out_ = std::make_unique<io::ProbeWriter>(out_dir_ + "/probes.csv", names, rank_ == 0, carried);
+  if (continuing_) {
+    if (fluid_fields_) fluid_fields_->resume(t_);
+    if (plate_fields_) plate_fields_->resume(t_);
+  }
+  log_ = std::make_unique<io::RunLog>(out_dir_ + "/log.txt", rank_ == 0, options_.echo, continuing_);
+  collective_outcome(comm_, 0, rank_ == 0, [&] {
+    io::write_file_atomically(out_dir_ + "/scene.resolved.yaml", std::string("# resolved by halfeti ") + kVersion +
+                                                                    " from " + scene_.file + "\n" +
+                                                                    scene_.resolved_text());
+  });
+}
+
+// The parts' state from a checkpoint (the parts are built; each part checks that the state fits it).
+void Simulation::restore(const io::Checkpoint& c) {
+  const auto block = [&](const char* name) -> const std::vector<double>& {
+    const auto it = c.blocks.find(name);
+    if (it == c.blocks.end())
+      HALFETI_USER_ERROR("restart: '" << restart_path_ << "' holds no " << name << " state");
+    return it->second;
+  };
+  const auto text = [&](const char* name) {
+    const auto it = c.texts.find(name);
+    return it == c.texts.end() ? std::string() : it->second;
+  };
+  const auto& run = block("run");
+  if (run.size() != 5) HALFETI_USER_ERROR("restart: the run state of '" << restart_path_ << "' is malformed");
+  t_ = run[0];
+  steps_ = static_cast<long long>(run[1]);
+  initial_mass_ = run[2];
+  max_density_variation_ = run[3];
+  earlier_wall_ = run[4];
+  steps_at_start_ = steps_;
+  if (parts_.fluid) {
+    const auto& f = block("fluid");
+    if (f.size() != 4) HALFETI_USER_ERROR("restart: the fluid state of '" << restart_path_ << "' is malformed");
+    // The sound speed may be sized from the peak ground acceleration up to end_time (eq. 10): a longer run must
+    // not change it.
+    if (f[3] != parts_.fluid->sound_speed())
+      HALFETI_USER_ERROR("restart: the sound speed is " << parts_.fluid->sound_speed() << " m/s, the checkpoint's "
+                                                        << f[3] << " m/s (sized from the excitation up to end_time: "
+                                                                   "set fluid.sound_speed to continue)");
+    sph::Fluid::State st;
+    st.gid = c.particles.gid;
+    st.x = c.particles.x;
+    st.y = c.particles.y;
+    st.vx = c.particles.vx;
+    st.vy = c.particles.vy;
+    st.rho = c.particles.rho;
+    st.mass = c.particles.mass;
+    st.time = f[0];
+    st.step = static_cast<long>(f[1]);
+    st.spilled_mass = f[2];
+    st.events = decode_health_log(text("health_log"));
+    st.active_warnings = decode_lines(text("active_warnings"));
+    parts_.fluid->restore(st);
+  }
+  if (parts_.structure_setup) {
+    on_structure_rank(comm_, parts_.structure_rank, [&] {
+      parts_.plate->restore_state(block("plate"));
+      const auto& cables = block("cables");
+      std::size_t used = 0;
+      for (auto& cable : parts_.cables) used += cable->restore_state(cables.data() + used, cables.size() - used);
+      if (used != cables.size())
+        HALFETI_USER_ERROR("restart: '" << restart_path_ << "' holds the state of more cables than the scene has");
+    });
+  }
+  if (parts_.coupling) {
+    parts_.coupling->restore_state(block("coupling"));
+    if (parts_.coupling->parameters().plate_wall)
+      parts_.fluid->set_plate_outline(parts_.coupling->plate_outline());
+    else
+      parts_.fluid->set_barriers(parts_.coupling->outline());
   }
 }
 
@@ -382,35 +504,45 @@ void Simulation::write_fields(double t) {
 
 void Simulation::write_checkpoint(const std::string& label) {
   ScopedTimer timer(timers_, "checkpoint");
+  const double started = wall_now();
+  io::Checkpoint c;
+  c.time = t_;
+  c.steps = steps_;
+  c.ranks = size_;
+  c.blocks["run"] = {t_, static_cast<double>(steps_), initial_mass_, max_density_variation_,
+                     earlier_wall_ + (run_start_ > 0.0 ? started - run_start_ : 0.0)};
+  c.texts["scene"] = scene_.resolved_text();
   if (parts_.fluid) {
-    const sph::Fluid& f = *parts_.fluid;
-    const std::size_t n = f.owned_count();
-    const std::vector<double> gid = owned_gids(f);
-    const std::string path = checkpoints_->write(t_, n, f.x().data(), f.y().data(),
-                                                 {{"vx", f.vx().data()}, {"vy", f.vy().data()},
-                                                  {"rho", f.rho().data()}, {"gid", gid.data()}});
-    log_->line("checkpoint (" + label + "): " + path);
+    sph::Fluid::State st = parts_.fluid->state();
+    c.particles = {std::move(st.gid), std::move(st.x),  std::move(st.y),   std::move(st.vx),
+                   std::move(st.vy),  std::move(st.rho), std::move(st.mass)};
+    c.blocks["fluid"] = {st.time, static_cast<double>(st.step), st.spilled_mass, parts_.fluid->sound_speed()};
+    c.texts["health_log"] = encode_health_log(st.events);
+    c.texts["active_warnings"] = encode_lines(st.active_warnings);
   }
-  if (plate_checkpoints_) {
-    // The plate's Newmark state on its reference nodes (rank 0 writes it; the others write nothing).
-    std::vector<double> x, y, u[2], v[2], a[2];
-    if (const auto* plate = rank_ == 0 ? parts_.plate.get() : nullptr) {
-      for (int n = 0; n < plate->node_count(); ++n) {
-        x.push_back(plate->mesh().nodes[n].x());
-        y.push_back(plate->mesh().nodes[n].y());
-        for (int c = 0; c < 2; ++c) {
-          u[c].push_back(plate->displacement()(2 * n + c));
-          v[c].push_back(plate->velocity()(2 * n + c));
-          a[c].push_back(plate->acceleration()(2 * n + c));
-        }
-      }
+  if (parts_.structure_setup) {
+    std::vector<double> plate, cables;
+    if (parts_.structure_rank) {  // collective over the structure's ranks; rank 0 (one of them) writes
+      plate = parts_.plate->save_state();
+      for (const auto& cable : parts_.cables) cable->save_state(cables);
     }
-    const std::string path = plate_checkpoints_->write(
-        t_, x.size(), x.data(), y.data(),
-        {{"ux", u[0].data()}, {"uy", u[1].data()}, {"vx", v[0].data()}, {"vy", v[1].data()}, {"ax", a[0].data()},
-         {"ay", a[1].data()}});
-    log_->line("checkpoint (" + label + "): " + path);
+    c.blocks["plate"] = std::move(plate);
+    c.blocks["cables"] = std::move(cables);
   }
+  if (parts_.coupling) c.blocks["coupling"] = parts_.coupling->save_state();
+  const std::string dir = out_dir_ + "/checkpoints", path = dir + "/" + io::checkpoint_file_name(steps_);
+  io::write_checkpoint(comm_, path, c);
+  // The newest output.checkpoint_keep checkpoints stay (0: all).
+  const int keep = static_cast<int>(scene_.root().section("output").integer("checkpoint_keep"));
+  collective_outcome(comm_, 0, rank_ == 0, [&] {
+    const auto all = io::list_checkpoints(dir);
+    for (std::size_t k = 0; keep > 0 && k + static_cast<std::size_t>(keep) < all.size(); ++k)
+      if (std::remove(all[k].c_str()) != 0)
+        HALFETI_IO_ERROR("cannot remove the old checkpoint '" << all[k] << "': " << std::strerror(errno));
+  });
+  last_checkpoint_wall_ = wall_now() - started;
+  last_checkpoint_step_ = steps_;
+  log_->line("checkpoint (" + label + "): " + path);
 }
 
 std::string Simulation::progress_line(double dt, double wall) const {
@@ -422,7 +554,35 @@ std::string Simulation::progress_line(double dt, double wall) const {
   return buf;
 }
 
-void Simulation::run() {
+// Whether every rank should stop at this step's end: a signal reached one of them, or (rank 0's clock) the next
+// step and a checkpoint would not fit in --max-wall. One reduction per step; the reason on every rank.
+std::string Simulation::stop_reason(double wall, double step_wall) {
+  int why[3] = {static_cast<int>(g_stop_signal), 0, 0};
+  if (rank_ == 0 && options_.max_wall > 0.0 && wall + 2.0 * step_wall + 2.0 * last_checkpoint_wall_ >= options_.max_wall)
+    why[1] = 1;
+  if (rank_ == 0 && !output_failure().empty()) why[2] = 1;
+  MPI_Allreduce(MPI_IN_PLACE, why, 3, MPI_INT, MPI_MAX, comm_);
+  if (why[2] != 0) check_outputs();
+  if (why[0] != 0) return signal_name(why[0]);
+  if (why[1] != 0) return "the wall-time limit (--max-wall " + format("%g", options_.max_wall) + " s)";
+  return "";
+}
+
+// rank 0's first failed write of the log or the probes ("" when none).
+std::string Simulation::output_failure() const {
+  if (probe_out_ && !probe_out_->failure().empty()) return probe_out_->failure();
+  if (log_ && !log_->failure().empty()) return log_->failure();
+  return "";
+}
+
+// Collective: raises the failed write of rank 0's log or probes as an IoError on every rank.
+void Simulation::check_outputs() {
+  collective_outcome(comm_, 0, rank_ == 0, [&] {
+    if (const std::string f = output_failure(); !f.empty()) throw IoError(f);
+  });
+}
+
+int Simulation::run() {
   const scene::Node root = scene_.root();
   const double end = root.section("scene").real("end_time");
   const scene::Node out = root.section("output");
@@ -431,57 +591,109 @@ void Simulation::run() {
   const double checkpoint_dt = out.real("checkpoint_interval");
   const double progress_dt = out.real("progress_interval") > 0 ? out.real("progress_interval") : end / 50.0;
   const double start = wall_now();
+  run_start_ = start;
+  started_utc_ = utc_now();
   announce();
-  if (parts_.fluid) initial_mass_ = parts_.fluid->total_mass();
+  if (!restart_path_.empty())
+    log_->line("restart: from " + restart_path_ + " at t = " + format("%.9g", t_) + " s, step " +
+               std::to_string(steps_));
+  else if (parts_.fluid)
+    initial_mass_ = parts_.fluid->total_mass();
+  write_summary("running", 0.0, 0.0);
+  g_stop_signal = 0;
+  for (int sig : {SIGTERM, SIGINT, SIGUSR1}) std::signal(sig, request_stop);
 
-  double next_probe = probe_dt, next_field = field_dt, next_checkpoint = checkpoint_dt, next_progress = progress_dt;
+  // A step ends within round-off of a scheduled time counts as reaching it. The schedules are the sequences
+  // dt, dt + dt, ... (each the sum of the one before and dt), resumed after t on a restart.
+  const double tol = 1e-9 * end;
+  const auto first_after = [&](double interval) {
+    double next = interval;
+    if (interval > 0.0)
+      while (next <= t_ + tol) next += interval;
+    return next;
+  };
+  double next_probe = first_after(probe_dt), next_field = first_after(field_dt),
+         next_checkpoint = first_after(checkpoint_dt), next_progress = first_after(progress_dt);
   const double loop_start = wall_now();
   double dt = 0.0;
+  std::string stopped;
   try {
-    prepare_structure();
-    sample(t_);
-    if (field_dt > 0) write_fields(t_);
-    // A step ends within round-off of a scheduled time counts as reaching it.
-    const double tol = 1e-9 * end;
-    while (t_ < end - tol) {
-      dt = advance(end - t_);
-      t_ = parts_.fluid ? parts_.fluid->time() : t_ + dt;
-      ++steps_;
-      if (t_ >= next_probe - tol) {
+    try {
+      if (restart_path_.empty()) {
+        prepare_structure();
         sample(t_);
-        while (next_probe <= t_ + tol) next_probe += probe_dt;
+        if (field_dt > 0) write_fields(t_);
       }
-      if (field_dt > 0 && t_ >= next_field - tol) {
-        write_fields(t_);
-        while (next_field <= t_ + tol) next_field += field_dt;
+      double step_wall = 0.0;
+      while (t_ < end - tol) {
+        const double step_start = wall_now();
+        dt = advance(end - t_);
+        t_ = parts_.fluid ? parts_.fluid->time() : t_ + dt;
+        ++steps_;
+        if (t_ >= next_probe - tol) {
+          sample(t_);
+          while (next_probe <= t_ + tol) next_probe += probe_dt;
+        }
+        if (field_dt > 0 && t_ >= next_field - tol) {
+          write_fields(t_);
+          while (next_field <= t_ + tol) next_field += field_dt;
+        }
+        if (checkpoint_dt > 0 && t_ >= next_checkpoint - tol) {
+          write_checkpoint("scheduled");
+          while (next_checkpoint <= t_ + tol) next_checkpoint += checkpoint_dt;
+        }
+        if (t_ >= next_progress - tol) {
+          log_->line(progress_line(dt, wall_now() - start));
+          while (next_progress <= t_ + tol) next_progress += progress_dt;
+        }
+        step_wall = std::max(step_wall, wall_now() - step_start);
+        stopped = stop_reason(wall_now() - start, step_wall);
+        if (!stopped.empty() && t_ < end - tol) break;
+        stopped.clear();
       }
-      if (checkpoint_dt > 0 && t_ >= next_checkpoint - tol) {
-        write_checkpoint("scheduled");
-        while (next_checkpoint <= t_ + tol) next_checkpoint += checkpoint_dt;
+    } catch (const NumericalError& e) {
+      // Errors are raised on every rank together (the monitors reduce first), so the checkpoint is collective.
+      log_->line(std::string("stopped: ") + e.what());
+      try {
+        write_checkpoint("at the failure");
+      } catch (const IoError& io) {
+        log_->line(std::string("no checkpoint at the failure: ") + io.what());
       }
-      if (t_ >= next_progress - tol) {
-        log_->line(progress_line(dt, wall_now() - start));
-        while (next_progress <= t_ + tol) next_progress += progress_dt;
-      }
+      write_summary("numerical_failure", wall_now() - start, wall_now() - loop_start);
+      throw;
     }
-  } catch (const NumericalError& e) {
-    // Errors are raised on every rank together (the monitors reduce first), so the checkpoint is collective.
-    log_->line(std::string("stopped: ") + e.what());
-    write_checkpoint("at the failure");
-    write_summary("numerical_failure", wall_now() - start, wall_now() - loop_start);
+  } catch (const IoError& e) {
+    // An output that cannot be written (a full disk): said once, and in summary.json if that can still be written.
+    try {
+      log_->line(std::string("stopped: ") + e.what());
+    } catch (const IoError&) {
+    }
+    try {
+      write_summary("io_failure", wall_now() - start, wall_now() - loop_start);
+    } catch (const IoError&) {
+    }
     throw;
   }
+  check_outputs();
   const double loop_wall = wall_now() - loop_start;
-  write_checkpoint("final");
+  if (!stopped.empty()) {
+    write_checkpoint("at the stop");
+    log_->line("stopped: " + stopped + " at t = " + format("%.9g", t_) + " s, step " + std::to_string(steps_) +
+               "; continue with: halfeti run " + scene_.file + " --restart " + out_dir_ + " --out " + out_dir_);
+    write_summary("stopped", wall_now() - start, loop_wall);
+    return kExitStoppedResumable;
+  }
+  if (last_checkpoint_step_ != steps_) write_checkpoint("final");  // unless the schedule just wrote this step's
   log_->line(progress_line(dt, wall_now() - start));
   write_summary("ok", wall_now() - start, loop_wall);
   log_->line("done: " + std::to_string(steps_) + " steps, " + format("%.2f", wall_now() - start) + " s wall");
+  check_outputs();
+  return 0;
 }
 
 HealthLog Simulation::health_events() const {
   HealthLog out;
-  if (parts_.fluid)
-    for (const auto& e : parts_.fluid->health_events()) out.push_back({e.time, e.step, e.kind, e.message, e.fatal});
+  if (parts_.fluid) out = parts_.fluid->health_events();
   return out;
 }
 
@@ -503,23 +715,37 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
     timers.merge(plate);
   }
   const long long dofs = parts_.plate ? parts_.plate->dof_count() : 0;  // written by rank 0, a structure rank
-  if (rank_ != 0) return;
+  collective_outcome(comm_, 0, rank_ == 0, [&] {  // rank 0 writes; a failed write stops every rank
   const scene::Node root = scene_.root();
   io::Json j = io::Json::object();
   j.set("halfeti", kVersion);
+  j.set("exit_status", status);
   j.set("scene", root.section("scene").string("name"));
   j.set("scene_file", scene_.file);
   if (root.section("scene").has("description")) j.set("description", root.section("scene").string("description"));
+  // Provenance: what ran, where, when and from what.
+  io::Json prov = io::Json::object();
+  prov.set("version", kVersion).set("commit", kGitCommit).set("command_line", options_.command_line);
+  char host[256] = "";
+  gethostname(host, sizeof host - 1);
+  prov.set("host", host).set("started", started_utc_);
+  const char* job = std::getenv("SLURM_JOB_ID");
+  prov.set("slurm_job_id", job ? io::Json(std::string(job)) : io::Json());
+  prov.set("restarted_from", restart_path_.empty() ? io::Json() : io::Json(restart_path_));
+  j.set("provenance", prov);
   j.set("ranks", size_);
   j.set("particles", particles);
   j.set("structure_dofs", dofs);
   j.set("cables", static_cast<int>(parts_.cable_setups.size()));
   j.set("steps", steps_);
   j.set("simulated_time", t_);
-  j.set("wall_time", wall);
+  j.set("wall_time", wall);  // this run's (a restarted run's: since its restart)
   j.set("loop_wall_time", loop_wall);
-  j.set("ns_per_particle_step",
-        particles > 0 && steps_ > 0 ? io::Json(1e9 * loop_wall / (static_cast<double>(particles) * steps_)) : io::Json());
+  j.set("earlier_wall_time", earlier_wall_);  // of the runs it continues
+  const long long steps_here = steps_ - steps_at_start_;
+  j.set("ns_per_particle_step", particles > 0 && steps_here > 0
+                                    ? io::Json(1e9 * loop_wall / (static_cast<double>(particles) * steps_here))
+                                    : io::Json());
   io::Json tj = io::Json::object();
   for (const auto& [phase, seconds] : timers.all()) tj.set(phase, seconds);
   j.set("timers", tj);
@@ -536,9 +762,8 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
     events.push(ev);
   }
   j.set("health_events", events);
-  j.set("exit_status", status);
-  std::ofstream f(out_dir_ + "/summary.json");
-  f << j.dump() << "\n";
+  io::write_file_atomically(out_dir_ + "/summary.json", j.dump() + "\n");
+  });
 }
 
 }  // namespace halfeti::app

@@ -32,6 +32,17 @@ void SurfacePointLoad::start_step(const Eigen::Vector2d& load, const Eigen::Vect
   has_previous_ = true;
 }
 
+void SurfacePointLoad::save_state(std::vector<double>& state) const {
+  state.insert(state.end(), {previous_.x(), previous_.y(), place_.x(), place_.y(), has_previous_ ? 1.0 : 0.0});
+}
+
+const double* SurfacePointLoad::restore_state(const double* state) {
+  previous_ = Eigen::Vector2d(state[0], state[1]);
+  place_ = Eigen::Vector2d(state[2], state[3]);
+  has_previous_ = state[4] != 0.0;
+  return state + 5;
+}
+
 ContactCoupling::ContactCoupling(MPI_Comm world, structure::PlateSolver* solver,
                                  const CouplingParameters& params, int root)
     : comm_(world), root_(root), solver_(solver), params_(params) {
@@ -428,6 +439,68 @@ const CouplingStepReport& ContactCoupling::step(double t, double dt, const Inter
     }
   }
   return last_;
+}
+
+// Layout: [surface_motion_ size, values][mean_velocity_ size, values][fluid_load_ 2][breakdown_ 21]
+//         [loads_ count, 5 each][for each part: previous_force_ count, 2 each] (the last two root's only).
+std::vector<double> ContactCoupling::save_state() const {
+  std::vector<double> s;
+  for (const auto* v : {&surface_motion_, &mean_velocity_}) {
+    s.push_back(static_cast<double>(v->size()));
+    s.insert(s.end(), v->begin(), v->end());
+  }
+  s.insert(s.end(), fluid_load_, fluid_load_ + 2);
+  const auto* b = reinterpret_cast<const double*>(&breakdown_);
+  s.insert(s.end(), b, b + 21);
+  s.push_back(static_cast<double>(loads_.size()));
+  for (const auto& l : loads_) l->save_state(s);
+  for (const auto& part : previous_force_) {
+    s.push_back(static_cast<double>(part.size()));
+    for (const auto& f : part) s.insert(s.end(), {f.x(), f.y()});
+  }
+  return s;
+}
+
+void ContactCoupling::restore_state(const std::vector<double>& state) {
+  broadcast_surface();  // the surface of the restored plate (and, overwritten below, its nodal motion)
+  const double* p = state.data();
+  const double* end = p + state.size();
+  auto take_count = [&](std::size_t each) {
+    if (p >= end) HALFETI_USER_ERROR("restart: the coupling's state is shorter than this scene's coupling needs");
+    const auto n = static_cast<std::size_t>(*p++);
+    if (static_cast<std::size_t>(end - p) < n * each)
+      HALFETI_USER_ERROR("restart: the coupling's state is shorter than this scene's coupling needs");
+    return n;
+  };
+  for (auto* v : {&surface_motion_, &mean_velocity_}) {
+    const std::size_t n = take_count(1);
+    v->assign(p, p + n);
+    p += n;
+  }
+  if (surface_motion_.size() != 4 * surface_.points.size())
+    HALFETI_USER_ERROR("restart: the coupling's state is for a plate surface of " << surface_motion_.size() / 4
+                                                                                  << " points, this scene's has "
+                                                                                  << surface_.points.size());
+  if (end - p < 23) HALFETI_USER_ERROR("restart: the coupling's state is shorter than this scene's coupling needs");
+  std::copy(p, p + 2, fluid_load_);
+  p += 2;
+  std::copy(p, p + 21, reinterpret_cast<double*>(&breakdown_));
+  p += 21;
+  const std::size_t loads = take_count(5);
+  if (loads != surface_.points.size())  // one load per surface point (on the root; the count on every rank)
+    HALFETI_USER_ERROR("restart: the coupling's state has " << loads << " surface loads, this scene's plate "
+                                                            << surface_.points.size());
+  if (rank_ == root_) {
+    for (auto& l : loads_) p = l->restore_state(p);
+  } else {
+    p += 5 * loads;
+  }
+  for (auto& part : previous_force_) {
+    const std::size_t n = take_count(2);
+    part.resize(rank_ == root_ ? n : 0);
+    for (std::size_t k = 0; k < part.size(); ++k) part[k] = Eigen::Vector2d(p[2 * k], p[2 * k + 1]);
+    p += 2 * n;
+  }
 }
 
 }  // namespace halfeti::coupling

@@ -3,88 +3,25 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <sys/stat.h>
 
 #include "halfeti/core/error.hpp"
+#include "hdf5_file.hpp"
 
 namespace halfeti::io {
 
 namespace {
 
-// Owns one HDF5 identifier and closes it with the matching H5*close.
-class H5Id {
- public:
-  H5Id(hid_t id, herr_t (*close)(hid_t), const std::string& what) : id_(id), close_(close) {
-    if (id_ < 0) HALFETI_USER_ERROR("HDF5: " << what << " failed");
-  }
-  ~H5Id() {
-    if (id_ >= 0) close_(id_);
-  }
-  H5Id(const H5Id&) = delete;
-  H5Id& operator=(const H5Id&) = delete;
-  operator hid_t() const { return id_; }  // NOLINT(google-explicit-constructor)
-
- private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
-
-void h5check(herr_t status, const std::string& what) {
-  if (status < 0) HALFETI_USER_ERROR("HDF5: " << what << " failed");
-}
-
-void quiet_hdf5() {
-  static bool done = false;
-  if (!done) {
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // our messages name what failed; no HDF5 error stacks
-    done = true;
-  }
-}
-
-// Writes one 1-D dataset collectively: this rank's `count` values at `offset` of `total`.
-template <class T>
-void write_slab(hid_t file, const std::string& name, hid_t type, const T* data, long long offset, long long count,
-                long long total) {
-  const hsize_t dims[1] = {static_cast<hsize_t>(total)};
-  H5Id space(H5Screate_simple(1, dims, nullptr), H5Sclose, "dataspace for " + name);
-  H5Id dset(H5Dcreate2(file, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
-            "create dataset " + name);
-  const hsize_t start[1] = {static_cast<hsize_t>(offset)}, cnt[1] = {static_cast<hsize_t>(count)};
-  H5Id filespace(H5Dget_space(dset), H5Sclose, "file space of " + name);
-  H5Id memspace(H5Screate_simple(1, cnt, nullptr), H5Sclose, "memory space of " + name);
-  if (count > 0) {
-    h5check(H5Sselect_hyperslab(filespace, H5S_SELECT_SET, start, nullptr, cnt, nullptr), "select " + name);
-  } else {
-    h5check(H5Sselect_none(filespace), "select none " + name);
-    h5check(H5Sselect_none(memspace), "select none " + name);
-  }
-  H5Id xfer(H5Pcreate(H5P_DATASET_XFER), H5Pclose, "transfer list");
-  h5check(H5Pset_dxpl_mpio(xfer, H5FD_MPIO_COLLECTIVE), "collective transfer");
-  h5check(H5Dwrite(dset, type, memspace, filespace, xfer, data), "write " + name);
-}
-
-template <class T>
-std::vector<T> read_all(hid_t file, const std::string& name, hid_t type) {
-  H5Id dset(H5Dopen2(file, name.c_str(), H5P_DEFAULT), H5Dclose, "open dataset " + name);
-  H5Id space(H5Dget_space(dset), H5Sclose, "space of " + name);
-  const hssize_t n = H5Sget_simple_extent_npoints(space);
-  std::vector<T> out(static_cast<size_t>(std::max<hssize_t>(n, 0)));
-  if (n > 0) h5check(H5Dread(dset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), "read " + name);
-  return out;
-}
-
-std::string base_name(const std::string& path) {
-  const auto p = path.find_last_of('/');
-  return p == std::string::npos ? path : path.substr(p + 1);
-}
 
 }  // namespace
 
 FieldSeries::FieldSeries(MPI_Comm comm, std::string dir, std::string name)
     : comm_(comm), dir_(std::move(dir)), name_(std::move(name)) {
-  quiet_hdf5();
+  h5::quiet();
   xdmf_path_ = dir_ + "/" + name_ + ".xdmf";
   int rank = 0;
   MPI_Comm_rank(comm_, &rank);
@@ -94,10 +31,12 @@ FieldSeries::FieldSeries(MPI_Comm comm, std::string dir, std::string name)
 
 std::string FieldSeries::write(double time, std::size_t n_local, const double* x, const double* y,
                                const std::vector<PointField>& fields, const CellBlock* cells) {
+  using h5::Id;
+  using h5::Use;
   char buf[32];
   std::snprintf(buf, sizeof buf, "_%06d.h5", frames());
   const std::string file_name = name_ + buf;
-  const std::string path = dir_ + "/" + file_name;
+  const std::string path = dir_ + "/" + file_name, partial = path + ".partial";
 
   long long local[2] = {static_cast<long long>(n_local), cells ? static_cast<long long>(cells->n_local_cells) : 0};
   long long offset[2] = {0, 0}, total[2] = {0, 0};
@@ -107,41 +46,81 @@ std::string FieldSeries::write(double time, std::size_t n_local, const double* x
   if (rank == 0) offset[0] = offset[1] = 0;  // MPI_Exscan leaves rank 0's buffer undefined
   MPI_Allreduce(local, total, 2, MPI_LONG_LONG, MPI_SUM, comm_);
 
-  H5Id fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "file access list");
-  h5check(H5Pset_fapl_mpio(fapl, comm_, MPI_INFO_NULL), "MPI-IO file access");
-  H5Id file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), H5Fclose, "create '" + path + "'");
-
+  // Written under a temporary name and renamed when complete: a file of the series is whole or absent.
+  Frame frame{time, file_name, total[0], 0, {}, "Polyvertex", 1};
   {
-    H5Id aspace(H5Screate(H5S_SCALAR), H5Sclose, "scalar space");
-    H5Id attr(H5Acreate2(file, "time", H5T_NATIVE_DOUBLE, aspace, H5P_DEFAULT, H5P_DEFAULT), H5Aclose, "attr time");
-    h5check(H5Awrite(attr, H5T_NATIVE_DOUBLE, &time), "write time");
+    Id fapl(h5::mpio_access(comm_), H5Pclose, Use::kWrite, "file access list");
+    errno = 0;
+    Id file(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), H5Fclose, Use::kWrite,
+            "create '" + partial + "'");
+    h5::write_attribute(file, "time", time, partial);
+    h5::write_slab(file, "x", H5T_NATIVE_DOUBLE, x, offset[0], local[0], total[0], partial);
+    h5::write_slab(file, "y", H5T_NATIVE_DOUBLE, y, offset[0], local[0], total[0], partial);
+    for (const auto& f : fields) {
+      HALFETI_CHECK(f.name != "x" && f.name != "y" && f.name != "cells", "field name '" << f.name << "' is reserved");
+      h5::write_slab(file, f.name, H5T_NATIVE_DOUBLE, f.values, offset[0], local[0], total[0], partial);
+      frame.fields.push_back(f.name);
+    }
+    if (cells) {
+      const long long npc = cells->nodes_per_cell;
+      h5::write_slab(file, "cells", H5T_NATIVE_INT64, cells->connectivity, offset[1] * npc, local[1] * npc,
+                     total[1] * npc, partial);
+      frame.n_cells = total[1];
+      frame.topology = cells->xdmf_topology;
+      frame.nodes_per_cell = cells->nodes_per_cell;
+      h5::write_attribute(file, "topology", frame.topology, partial);  // for resume() and readers
+      h5::write_attribute(file, "nodes_per_cell", static_cast<double>(frame.nodes_per_cell), partial);
+    }
+    errno = 0;
+    file.close("close '" + partial + "'");
   }
-  write_slab(file, "x", H5T_NATIVE_DOUBLE, x, offset[0], local[0], total[0]);
-  write_slab(file, "y", H5T_NATIVE_DOUBLE, y, offset[0], local[0], total[0]);
-  std::vector<std::string> names;
-  for (const auto& f : fields) {
-    HALFETI_CHECK(f.name != "x" && f.name != "y" && f.name != "cells", "field name '" << f.name << "' is reserved");
-    write_slab(file, f.name, H5T_NATIVE_DOUBLE, f.values, offset[0], local[0], total[0]);
-    names.push_back(f.name);
-  }
-  Frame frame{time, file_name, total[0], 0, names, "Polyvertex", 1};
-  if (cells) {
-    const long long npc = cells->nodes_per_cell;
-    write_slab(file, "cells", H5T_NATIVE_INT64, cells->connectivity, offset[1] * npc, local[1] * npc, total[1] * npc);
-    frame.n_cells = total[1];
-    frame.topology = cells->xdmf_topology;
-    frame.nodes_per_cell = cells->nodes_per_cell;
-  }
+  rename_on_root(comm_, partial, path);
   frames_.push_back(frame);
   if (rank == 0) write_xdmf();
   return path;
+}
+
+void FieldSeries::resume(double time) {
+  // Rank 0 reads the series' files in order and keeps those at or before `time` (within round-off of it), removing
+  // the later ones; the others keep the count, which names the next file.
+  int rank = 0;
+  MPI_Comm_rank(comm_, &rank);
+  frames_.clear();
+  int kept = 0;
+  if (rank == 0) {
+    for (int k = 0;; ++k) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "_%06d.h5", k);
+      const std::string file_name = name_ + buf, path = dir_ + "/" + file_name;
+      struct stat st {};
+      if (::stat(path.c_str(), &st) != 0) break;
+      if (static_cast<int>(frames_.size()) == k) {
+        const FieldFrameData d = read_field_file(path);
+        if (d.time <= time * (1.0 + 1e-12) + 1e-300) {
+          Frame f{d.time, file_name, static_cast<long long>(d.x.size()), 0, d.names, "Polyvertex", 1};
+          if (!d.cells.empty()) {
+            f.topology = d.topology;
+            f.nodes_per_cell = d.nodes_per_cell;
+            f.n_cells = static_cast<long long>(d.cells.size()) / d.nodes_per_cell;
+          }
+          frames_.push_back(f);
+          continue;
+        }
+      }
+      std::remove(path.c_str());  // a frame after the restart: the continued run writes its own
+    }
+    kept = static_cast<int>(frames_.size());
+    write_xdmf();
+  }
+  MPI_Bcast(&kept, 1, MPI_INT, 0, comm_);
+  if (rank != 0) frames_.resize(static_cast<std::size_t>(kept), Frame{0.0, "", 0, 0, {}, "", 1});
 }
 
 void FieldSeries::write_xdmf() const {
   const std::string tmp = xdmf_path_ + ".tmp";
   {
     std::ofstream out(tmp);
-    if (!out) HALFETI_USER_ERROR("cannot write '" << xdmf_path_ << "'");
+    if (!out) HALFETI_IO_ERROR("cannot write '" << tmp << "': " << std::strerror(errno));
     out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
         << "  <Grid Name=\"" << name_ << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
     for (const auto& f : frames_) {
@@ -175,8 +154,11 @@ void FieldSeries::write_xdmf() const {
       out << "   </Grid>\n";
     }
     out << "  </Grid>\n </Domain>\n</Xdmf>\n";
+    out.flush();
+    if (!out) HALFETI_IO_ERROR("cannot write '" << tmp << "': " << std::strerror(errno));
   }
-  std::rename(tmp.c_str(), xdmf_path_.c_str());
+  if (std::rename(tmp.c_str(), xdmf_path_.c_str()) != 0)
+    HALFETI_IO_ERROR("cannot rename '" << tmp << "' to '" << xdmf_path_ << "': " << std::strerror(errno));
 }
 
 const std::vector<double>& FieldFrameData::field(const std::string& name) const {
@@ -186,32 +168,42 @@ const std::vector<double>& FieldFrameData::field(const std::string& name) const 
 }
 
 FieldFrameData read_field_file(const std::string& path) {
-  quiet_hdf5();
-  H5Id file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "open '" + path + "'");
+  using h5::Id;
+  using h5::Use;
+  h5::quiet();
+  Id file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, Use::kRead, "open '" + path + "'");
   FieldFrameData d;
-  {
-    H5Id attr(H5Aopen(file, "time", H5P_DEFAULT), H5Aclose, "attribute time of '" + base_name(path) + "'");
-    h5check(H5Aread(attr, H5T_NATIVE_DOUBLE, &d.time), "read time");
-  }
-  d.x = read_all<double>(file, "x", H5T_NATIVE_DOUBLE);
-  d.y = read_all<double>(file, "y", H5T_NATIVE_DOUBLE);
-  hsize_t n_links = 0;
+  d.time = h5::read_double_attribute(file, "time", path);
+  d.x = h5::read_all<double>(file, "x", H5T_NATIVE_DOUBLE, path);
+  d.y = h5::read_all<double>(file, "y", H5T_NATIVE_DOUBLE, path);
   H5G_info_t info;
-  h5check(H5Gget_info(file, &info), "group info");
-  n_links = info.nlinks;
-  for (hsize_t i = 0; i < n_links; ++i) {
+  h5::check(H5Gget_info(file, &info), Use::kRead, "group info of '" + path + "'");
+  for (hsize_t i = 0; i < info.nlinks; ++i) {
     char name[256];
     H5Lget_name_by_idx(file, ".", H5_INDEX_NAME, H5_ITER_INC, i, name, sizeof name, H5P_DEFAULT);
     const std::string n(name);
     if (n == "x" || n == "y") continue;
     if (n == "cells") {
-      d.cells = read_all<std::int64_t>(file, "cells", H5T_NATIVE_INT64);
+      d.cells = h5::read_all<std::int64_t>(file, "cells", H5T_NATIVE_INT64, path);
       continue;
     }
     d.names.push_back(n);
-    d.values.push_back(read_all<double>(file, n, H5T_NATIVE_DOUBLE));
+    d.values.push_back(h5::read_all<double>(file, n, H5T_NATIVE_DOUBLE, path));
+  }
+  if (!d.cells.empty()) {
+    d.topology = h5::read_string_attribute(file, "topology", path);
+    d.nodes_per_cell = static_cast<int>(h5::read_double_attribute(file, "nodes_per_cell", path));
   }
   return d;
+}
+
+void rename_on_root(MPI_Comm comm, const std::string& from, const std::string& to) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  int failed = 0;
+  if (rank == 0 && std::rename(from.c_str(), to.c_str()) != 0) failed = errno;
+  MPI_Bcast(&failed, 1, MPI_INT, 0, comm);
+  if (failed != 0) HALFETI_IO_ERROR("cannot rename '" << from << "' to '" << to << "': " << std::strerror(failed));
 }
 
 }  // namespace halfeti::io

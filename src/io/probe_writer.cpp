@@ -10,16 +10,35 @@
 
 namespace halfeti::io {
 
-ProbeWriter::ProbeWriter(const std::string& path, const std::vector<std::string>& names, bool writer) : names_(names) {
+ProbeWriter::ProbeWriter(const std::string& path, const std::vector<std::string>& names, bool writer,
+                         const std::vector<std::string>& carried_rows)
+    : path_(path), names_(names) {
   for (const auto& n : names)
     HALFETI_CHECK(n.find(',') == std::string::npos && n != "t", "probe name '" << n << "' cannot be a CSV column");
   if (!writer) return;
   file_ = std::fopen(path.c_str(), "w");
-  if (!file_) HALFETI_USER_ERROR("cannot write probes to '" << path << "': " << std::strerror(errno));
-  std::fputs("t", file_);
-  for (const auto& n : names) std::fprintf(file_, ",%s", n.c_str());
+  if (!file_) HALFETI_IO_ERROR("cannot write probes to '" << path << "': " << std::strerror(errno));
+  std::fputs(header(names).c_str(), file_);
   std::fputc('\n', file_);
-  std::fflush(file_);
+  for (const auto& row : carried_rows) {
+    std::fputs(row.c_str(), file_);
+    std::fputc('\n', file_);
+  }
+  flush();
+  if (!failure_.empty()) HALFETI_IO_ERROR(failure_);
+}
+
+std::string ProbeWriter::header(const std::vector<std::string>& names) {
+  std::string h = "t";
+  for (const auto& n : names) h += "," + n;
+  return h;
+}
+
+void ProbeWriter::flush() {
+  if (std::fflush(file_) == 0 && !std::ferror(file_)) return;
+  failure_ = "cannot write probes to '" + path_ + "': " + std::strerror(errno);
+  std::fclose(file_);
+  file_ = nullptr;
 }
 
 ProbeWriter::~ProbeWriter() {
@@ -33,7 +52,7 @@ void ProbeWriter::write(double t, const std::vector<double>& values) {
   std::fprintf(file_, "%.9g", t);
   for (double v : values) std::fprintf(file_, ",%.9g", v);
   std::fputc('\n', file_);
-  std::fflush(file_);
+  flush();
 }
 
 std::vector<double> ProbeTable::column(const std::string& name) const {

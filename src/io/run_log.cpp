@@ -9,10 +9,11 @@
 
 namespace halfeti::io {
 
-RunLog::RunLog(const std::string& path, bool writer, bool echo) : writer_(writer), echo_(echo) {
+RunLog::RunLog(const std::string& path, bool writer, bool echo, bool append)
+    : path_(path), writer_(writer), echo_(echo) {
   if (!writer_ || path.empty()) return;
-  file_ = std::fopen(path.c_str(), "w");
-  if (!file_) HALFETI_USER_ERROR("cannot write the log '" << path << "': " << std::strerror(errno));
+  file_ = std::fopen(path.c_str(), append ? "a" : "w");
+  if (!file_) HALFETI_IO_ERROR("cannot write the log '" << path << "': " << std::strerror(errno));
 }
 
 RunLog::~RunLog() {
@@ -29,8 +30,26 @@ void RunLog::line(const std::string& text) {
   if (file_) {
     std::fputs(text.c_str(), file_);
     std::fputc('\n', file_);
-    std::fflush(file_);
+    if (std::fflush(file_) != 0 || std::ferror(file_)) {
+      failure_ = "cannot write the log '" + path_ + "': " + std::strerror(errno);
+      std::fclose(file_);
+      file_ = nullptr;  // the run stops at the step's end (the caller checks failure() collectively)
+    }
   }
+}
+
+void write_file_atomically(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".tmp";
+  std::FILE* f = std::fopen(tmp.c_str(), "w");
+  if (!f) HALFETI_IO_ERROR("cannot write '" << tmp << "': " << std::strerror(errno));
+  const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size() && std::fflush(f) == 0;
+  const int reason = errno;
+  if (std::fclose(f) != 0 || !written) {
+    std::remove(tmp.c_str());
+    HALFETI_IO_ERROR("cannot write '" << path << "': " << std::strerror(written ? errno : reason));
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0)
+    HALFETI_IO_ERROR("cannot rename '" << tmp << "' to '" << path << "': " << std::strerror(errno));
 }
 
 void make_directories(const std::string& path) {

@@ -387,6 +387,62 @@ void Fluid::migrate() {
   sort_owned_by_cell();
 }
 
+Fluid::State Fluid::state() const {
+  HALFETI_CHECK(!forces_ready_ && !predicted_, "Fluid::state() is taken between steps");
+  State s;
+  const auto owned = [&](const auto& v) { return std::vector(v.begin(), v.begin() + n_owned_); };
+  s.gid = owned(gid_);
+  s.x = owned(x_);
+  s.y = owned(y_);
+  s.vx = owned(vx_);
+  s.vy = owned(vy_);
+  s.rho = owned(rho_);
+  s.mass = owned(mass_);
+  s.time = time_;
+  s.spilled_mass = spilled_mass_;
+  s.step = step_;
+  s.events = events_;
+  s.active_warnings = active_warnings_;
+  return s;
+}
+
+void Fluid::restore(const State& all) {
+  const std::size_t n = all.gid.size();
+  HALFETI_CHECK(all.x.size() == n && all.y.size() == n && all.vx.size() == n && all.vy.size() == n &&
+                    all.rho.size() == n && all.mass.size() == n,
+                "Fluid::restore: particle arrays of unequal length");
+  // As at the start: every rank sees every particle, the cells are partitioned by their counts, each rank keeps
+  // its cells' particles (in (cell, gid) order, as after every step).
+  std::vector<long> counts(grid_.cell_count(), 0);
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!std::isfinite(all.x[k]) || !std::isfinite(all.y[k]))
+      HALFETI_USER_ERROR("restart: particle " << all.gid[k] << " has a position that is not finite");
+    ++counts[grid_.cell_of(all.x[k], all.y[k])];
+  }
+  owner_ = parallel::partition_cells_collective(comm_.get(), grid_, counts, params_.first_rank_share);
+  gid_.clear();
+  for (auto* v : {&x_, &y_, &vx_, &vy_, &rho_, &mass_}) v->clear();
+  for (std::size_t k = 0; k < n; ++k) {
+    if (owner_[grid_.cell_of(all.x[k], all.y[k])] != rank_) continue;
+    gid_.push_back(all.gid[k]);
+    x_.push_back(all.x[k]);
+    y_.push_back(all.y[k]);
+    vx_.push_back(all.vx[k]);
+    vy_.push_back(all.vy[k]);
+    rho_.push_back(all.rho[k]);
+    mass_.push_back(all.mass[k]);
+  }
+  n_owned_ = n_local_ = static_cast<int>(gid_.size());
+  n_global_ = static_cast<long>(n);
+  sort_owned_by_cell();
+  time_ = all.time;
+  step_ = all.step;
+  spilled_mass_ = all.spilled_mass;
+  events_ = all.events;
+  active_warnings_ = all.active_warnings;
+  forces_ready_ = predicted_ = false;
+}
+
 std::vector<double> Fluid::pressure() const {
   std::vector<double> p(n_owned_);
   for (int i = 0; i < n_owned_; ++i) p[i] = pressure_from_density(rho_[i], params_.density, c0_);

@@ -370,16 +370,19 @@ void PlateSolver::build_scatter_map() {
   HALFETI_PETSC_CALL(MatRestoreRowIJ(matrix_.get(), 0, PETSC_FALSE, blocks, &n, &ia, &ja, &done));
 }
 
+void PlateSolver::prepare_matrix() {
+  if (!matrix_dirty_) return;
+  // The pattern pass assembles once in static mode: keep the step's mode and Newton bookkeeping intact.
+  const Mode mode = mode_;
+  const double first = first_residual_norm_;
+  build_matrix();
+  build_scatter_map();
+  mode_ = mode;
+  first_residual_norm_ = first;
+}
+
 void PlateSolver::assemble_newton_system() {
-  if (matrix_dirty_) {
-    // The pattern pass assembles once in static mode: keep the step's mode and Newton bookkeeping intact.
-    const Mode mode = mode_;
-    const double first = first_residual_norm_;
-    build_matrix();
-    build_scatter_map();
-    mode_ = mode;
-    first_residual_norm_ = first;
-  }
+  prepare_matrix();
   Mat a = matrix_.get();
   if (element_scatter_.empty()) {
     HALFETI_PETSC_CALL(MatZeroEntries(a));

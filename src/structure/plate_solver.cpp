@@ -154,6 +154,40 @@ void PlateSolver::set_state(const Eigen::VectorXd& displacement, const Eigen::Ve
   for (int n : mesh_.clamped_nodes) a_.segment<2>(2 * n).setZero();
 }
 
+std::vector<double> PlateSolver::save_state() const {
+  const auto n = static_cast<std::size_t>(dof_count());
+  std::vector<double> out;
+  out.reserve(3 * n + alpha_.size() * kEasModes);
+  for (const Eigen::VectorXd* v : {&u_, &v_, &a_}) out.insert(out.end(), v->data(), v->data() + n);
+  // Each element's parameters live on the rank that owns it: a sum over ranks of zeros elsewhere is exact.
+  std::vector<double> alpha(alpha_.size() * kEasModes, 0.0);
+  if (mesh_.element_type == ElementType::kQ4Eas)
+    for (int e : partition_.owned_elements)
+      for (int m = 0; m < kEasModes; ++m) alpha[static_cast<std::size_t>(e) * kEasModes + m] = alpha_[e](m);
+  if (size_ > 1 && !alpha.empty())
+    MPI_Allreduce(MPI_IN_PLACE, alpha.data(), static_cast<int>(alpha.size()), MPI_DOUBLE, MPI_SUM, comm_.get());
+  out.insert(out.end(), alpha.begin(), alpha.end());
+  return out;
+}
+
+void PlateSolver::restore_state(const std::vector<double>& state) {
+  const auto n = static_cast<std::size_t>(dof_count());
+  if (state.size() != 3 * n + alpha_.size() * kEasModes)
+    HALFETI_USER_ERROR("restart: the plate's state has " << state.size() << " values, this scene's plate needs "
+                                                         << 3 * n + alpha_.size() * kEasModes);
+  // The matrix pattern first: its pass evaluates the elements and the nodal elements (a cable's warm start), which
+  // the caller restores after this.
+  prepare_matrix();
+  const double* p = state.data();
+  for (Eigen::VectorXd* v : {&u_, &v_, &a_}) {
+    std::copy(p, p + n, v->data());
+    p += n;
+  }
+  for (auto& alpha : alpha_)
+    for (int m = 0; m < kEasModes; ++m) alpha(m) = *p++;
+  alpha_solved_ = alpha_;
+}
+
 std::string PlateSolver::summary() const {
   const auto& g = params_.geometry;
   const auto& m = params_.material;

@@ -12,6 +12,9 @@ struct Command {
   std::string scene;                     // run, check
   std::vector<std::string> overrides;    // --set key.path=value
   std::string out_dir;                   // --out (default out/<scene name>)
+  std::string restart;                   // --restart PATH
+  bool overwrite = false;                // --overwrite
+  double max_wall = 0.0;                 // --max-wall SECONDS (0: none)
   std::vector<std::string> petsc_args;   // after --
   std::vector<std::string> tool_args;    // cable: everything after the word
 };

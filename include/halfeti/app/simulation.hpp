@@ -13,6 +13,7 @@
 #include "halfeti/core/health.hpp"
 #include "halfeti/core/scene.hpp"
 #include "halfeti/core/timers.hpp"
+#include "halfeti/io/checkpoint.hpp"
 #include "halfeti/io/fields.hpp"
 #include "halfeti/io/probe_writer.hpp"
 #include "halfeti/io/run_log.hpp"
@@ -23,6 +24,10 @@ struct RunOptions {
   std::string out_dir;                  // empty: out/<scene.name>
   std::vector<std::string> petsc_args;  // passed to PETSc when the scene has a structure
   bool echo = true;                     // progress lines to stdout as well as log.txt
+  std::string restart;                  // --restart: a checkpoint, or a run folder (its latest checkpoint)
+  bool overwrite = false;               // --overwrite: clear another run's outputs from the folder first
+  double max_wall = 0.0;                // --max-wall: stop (resumable) before this many wall seconds; 0: none
+  std::string command_line;             // for summary.json's provenance
 };
 
 // Reads what a resolved scene names without building the heavy parts (what `halfeti check` does beyond the
@@ -35,9 +40,11 @@ class Simulation {
   Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options);
   ~Simulation();
 
-  // Runs to the end time. On a numerical failure it writes a checkpoint and summary.json (status
-  // "numerical_failure") and rethrows; the caller turns the error into one line and an exit status.
-  void run();
+  // Runs to the end time and returns 0, or stops at a step boundary on SIGTERM, SIGINT, SIGUSR1 or --max-wall
+  // with a checkpoint and summary.json (status "stopped") and returns kExitStoppedResumable. On a numerical
+  // failure it writes a checkpoint and summary.json ("numerical_failure") and rethrows; on a failed write,
+  // summary.json ("io_failure") if it can; the caller turns the error into one line and an exit status.
+  int run();
 
   const std::string& out_dir() const { return out_dir_; }
 
@@ -52,6 +59,10 @@ class Simulation {
   void write_fields(double t);
   void write_plate_fields(double t);
   void write_checkpoint(const std::string& label);
+  void restore(const io::Checkpoint& checkpoint);
+  std::string stop_reason(double wall, double step_wall);
+  std::string output_failure() const;
+  void check_outputs();
   void write_summary(const std::string& status, double wall, double loop_wall);
   std::string progress_line(double dt, double wall) const;
   HealthLog health_events() const;
@@ -65,11 +76,15 @@ class Simulation {
   std::vector<ProbeColumn> probes_;
   std::unique_ptr<io::ProbeWriter> probe_out_;
   std::unique_ptr<io::RunLog> log_;
-  std::unique_ptr<io::FieldSeries> fluid_fields_, plate_fields_, checkpoints_, plate_checkpoints_;
+  std::unique_ptr<io::FieldSeries> fluid_fields_, plate_fields_;
   PhaseTimers timers_;
   double t_ = 0.0;
-  long long steps_ = 0;
+  long long steps_ = 0, steps_at_start_ = 0, last_checkpoint_step_ = -1;
   double initial_mass_ = 0.0, max_density_variation_ = 0.0;
+  std::string restart_path_;  // the checkpoint continued from ("" for a fresh run)
+  bool continuing_ = false;   // the restart writes into the folder of the run it continues
+  std::string started_utc_;
+  double run_start_ = 0.0, earlier_wall_ = 0.0, last_checkpoint_wall_ = 0.0;
 };
 
 }  // namespace halfeti::app

@@ -6,6 +6,7 @@
 // and two user-facing raisers that carry the error class the program exits with:
 //   HALFETI_USER_ERROR(msg)         bad input: scene, file, option (exit status 2)
 //   HALFETI_NUMERICAL_ERROR(msg)    a method that failed: blow-up, no convergence (exit status 3)
+//   HALFETI_IO_ERROR(msg)           an output that could not be written: disk full, no permission (exit status 6)
 // `msg` is a stream expression: HALFETI_CHECK(n > 0, "n = " << n << " must be positive").
 #pragma once
 
@@ -15,7 +16,7 @@
 
 namespace halfeti {
 
-enum class ErrorKind { kUser, kNumerical, kInternal };
+enum class ErrorKind { kUser, kNumerical, kInternal, kIo };
 
 class Error : public std::runtime_error {
  public:
@@ -36,6 +37,11 @@ class NumericalError : public Error {
   explicit NumericalError(const std::string& what) : Error(ErrorKind::kNumerical, what) {}
 };
 
+class IoError : public Error {
+ public:
+  explicit IoError(const std::string& what) : Error(ErrorKind::kIo, what) {}
+};
+
 class InternalError : public Error {
  public:
   explicit InternalError(const std::string& what) : Error(ErrorKind::kInternal, what) {}
@@ -43,6 +49,8 @@ class InternalError : public Error {
 
 // Exit status the program uses for each kind (README documents these).
 int exit_status(ErrorKind kind);
+// A run stopped by a signal or --max-wall at a step boundary, with a checkpoint to resume from.
+constexpr int kExitStoppedResumable = 5;
 
 namespace detail {
 [[noreturn]] void raise_internal(const char* cond, const std::string& msg, const char* func, const char* file,
@@ -69,3 +77,4 @@ namespace detail {
 
 #define HALFETI_USER_ERROR(msg) throw ::halfeti::UserError(HALFETI_STREAM_(msg))
 #define HALFETI_NUMERICAL_ERROR(msg) throw ::halfeti::NumericalError(HALFETI_STREAM_(msg))
+#define HALFETI_IO_ERROR(msg) throw ::halfeti::IoError(HALFETI_STREAM_(msg))

@@ -132,6 +132,9 @@ class SurfacePointLoad : public NodalElement {
   const Eigen::Vector2d& force() const { return force_; }
   // The force the point gets at place x over the step: the water's load and the added mass's spring.
   Eigen::Vector2d spring_force(const Eigen::Vector2d& x) const { return -stiffness_ * (x - rest_); }
+  // A restart's state: what start_step() carries from one step to the next (5 doubles).
+  void save_state(std::vector<double>& state) const;
+  const double* restore_state(const double* state);
   std::vector<int> nodes() const override { return {node_}; }
   void evaluate(const std::vector<Eigen::Vector2d>& x, Eigen::VectorXd& f, Eigen::MatrixXd& k) override {
     f = stiffness_ * (x[0] - rest_) - force_;  // external: enters the residual with the sign opposite to F_int
@@ -180,6 +183,12 @@ class ContactCoupling {
   const ContactSolveReport& last_solve() const { return last_solve_; }  // root only (empty elsewhere)
   PhaseTimers timers() const;  // search, gather, assembly, solve, handback (assembly/solve: root only)
   const CouplingParameters& parameters() const { return params_; }
+
+  // A restart's state: what a step carries to the next (the surface's extrapolated motion, the surface loads'
+  // previous values, the work sums and their last nodal forces). save_state() is rank 0's copy; restore_state()
+  // is collective, after the plate's state is restored (it re-reads the surface from the plate).
+  std::vector<double> save_state() const;
+  void restore_state(const std::vector<double>& state);
 
  private:
   void broadcast_surface();

@@ -1,6 +1,7 @@
 // Field output: parallel HDF5, one file per output time, each rank writing its slab at an offset from a collective
 // scan, plus one XDMF file per series that ParaView opens as a time series (Cabana's HDF5ParticleOutput idea).
-// The reader opens the same files, so every writer has a round-trip test.
+// The reader opens the same files, so every writer has a round-trip test. Each file is written under a temporary
+// name and renamed when complete, so a file of the series is whole or absent.
 #pragma once
 
 #include <mpi.h>
@@ -35,6 +36,10 @@ class FieldSeries {
   std::string write(double time, std::size_t n_local, const double* x, const double* y,
                     const std::vector<PointField>& fields, const CellBlock* cells = nullptr);
 
+  // Collective: continue the series found in dir (a restart into the run's own folder): its files up to `time`
+  // are kept, later ones removed, and the next write follows them.
+  void resume(double time);
+
   int frames() const { return static_cast<int>(frames_.size()); }
   const std::string& xdmf_path() const { return xdmf_path_; }
 
@@ -61,8 +66,14 @@ struct FieldFrameData {
   std::vector<double> x, y;
   std::vector<std::vector<double>> values;        // aligned with names
   std::vector<std::int64_t> cells;                // empty for point clouds
+  std::string topology;                           // XDMF topology of the cells (with cells)
+  int nodes_per_cell = 0;
   const std::vector<double>& field(const std::string& name) const;
 };
 FieldFrameData read_field_file(const std::string& path);
+
+// Collective: rank 0 renames `from` to `to` (a file written under a temporary name, now complete); an IoError on
+// every rank if it cannot.
+void rename_on_root(MPI_Comm comm, const std::string& from, const std::string& to);
 
 }  // namespace halfeti::io

@@ -11,16 +11,25 @@ namespace halfeti::io {
 class ProbeWriter {
  public:
   // Opens `path` and writes the header when `writer` is true (rank 0); other ranks hold a closed writer.
-  ProbeWriter(const std::string& path, const std::vector<std::string>& names, bool writer);
+  // `carried_rows` (a restart's rows before the checkpoint, verbatim) follow the header. A failed open raises
+  // IoError naming the file and the system's reason; a failed row is kept in failure() (the writer is one rank:
+  // the run checks it collectively).
+  ProbeWriter(const std::string& path, const std::vector<std::string>& names, bool writer,
+              const std::vector<std::string>& carried_rows = {});
+  static std::string header(const std::vector<std::string>& names);  // "t,name1,name2,..." 
   ~ProbeWriter();
   ProbeWriter(const ProbeWriter&) = delete;
   ProbeWriter& operator=(const ProbeWriter&) = delete;
 
   void write(double t, const std::vector<double>& values);
   size_t columns() const { return names_.size(); }
+  const std::string& failure() const { return failure_; }
 
  private:
+  void flush();
+
   std::FILE* file_ = nullptr;
+  std::string path_, failure_;
   std::vector<std::string> names_;
 };
 

@@ -95,6 +95,22 @@ class Fluid {
 
   const PhaseTimers& timers() const { return timers_; }
   const std::vector<HealthEvent>& health_events() const { return events_; }
+
+  // ---- restart ----
+  // The whole state at a step boundary: the particles (those this rank owns from state(); every particle for
+  // restore()), the clock, the spilled water and the health log with its active warnings. Everything else a step
+  // reads (neighbours, halo, rates, dt) is rebuilt from these, so a restored fluid steps bit for bit as the one
+  // saved, on any number of ranks.
+  struct State {
+    std::vector<std::int64_t> gid;
+    std::vector<double> x, y, vx, vy, rho, mass;
+    double time = 0.0, spilled_mass = 0.0;
+    long step = 0;
+    std::vector<HealthEvent> events;
+    std::vector<std::string> active_warnings;
+  };
+  State state() const;
+  void restore(const State& all);  // collective; the particles partitioned afresh over this run's ranks
   // Cell -> owning rank map of the current decomposition (diagnostics of the balance).
   const std::vector<int>& cell_owner() const { return owner_; }
 

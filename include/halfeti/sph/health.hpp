@@ -8,15 +8,11 @@
 #include <string>
 #include <vector>
 
+#include "halfeti/core/health.hpp"
+
 namespace halfeti::sph {
 
-struct HealthEvent {
-  double time = 0.0;
-  long step = 0;
-  std::string kind;  // "density_variation", "outside_tank", "spacing_collapse", "nan", "dt_floor", "spilled"
-  std::string message;
-  bool fatal = false;
-};
+using HealthEvent = halfeti::HealthEvent;  // one record for every part's monitors (core/health.hpp)
 
 // Collective: among the ranks with has_problem, the message of the one with the smallest `key` (e.g. particle
 // gid) is returned on every rank; empty when no rank has one.

@@ -123,6 +123,13 @@ class PlateSolver {
   void set_state(const Eigen::VectorXd& displacement, const Eigen::VectorXd& velocity,
                  const Eigen::VectorXd& acceleration);
   void initialise_acceleration(double t);  // solves M a0 = R(t) - F(u0)
+  // A restart's whole state, flattened: u, v, a and the Q4-EAS elements' enhanced parameters (the start values of
+  // the next step's local solves). Collective over the structure's ranks (each holds its own elements'
+  // parameters); every rank returns the same vector. restore_state() takes it back on any structure rank count.
+  std::vector<double> save_state() const;
+  // Restore the nodal elements' own state (cables) after this: it builds the matrix pattern, whose pass evaluates
+  // them.
+  void restore_state(const std::vector<double>& state);
   const Eigen::VectorXd& displacement() const { return u_; }
   const Eigen::VectorXd& velocity() const { return v_; }
   const Eigen::VectorXd& acceleration() const { return a_; }
@@ -170,6 +177,7 @@ class PlateSolver {
  private:
   enum class Mode { kDynamic, kStatic, kInitialAcceleration };
   void build_matrix();
+  void prepare_matrix();  // builds the pattern and the scatter map when nodal elements changed it
   void build_scatter_map();
   // Computes residual_ and hands each element's effective matrix (component-major, column-major, 2 n x 2 n for
   // n nodes per element) to element_sink(e, values) and each nodal element's (dofs, row-major values) to nodal_sink; shared by both assembly paths.

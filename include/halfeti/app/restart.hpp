@@ -1,0 +1,36 @@
+// What a restart needs beyond the parts' own state (simulation.cpp saves and restores those): whether the scene
+// of the continued run may continue the saved one, the health log as text, and a run folder's bookkeeping (which
+// outputs it holds, the probe rows a continued run carries over).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "halfeti/core/health.hpp"
+
+namespace halfeti::app {
+
+// The first key (path.to.key) whose value differs between two resolved scenes, other than those a continued run
+// may change (scene.end_time, scene.description, output.*), with both values; empty when none does.
+std::string changed_physics_key(const std::string& saved_scene, const std::string& scene);
+
+// The health log as text and back, exactly (times in hexadecimal floating point).
+std::string encode_health_log(const HealthLog& log);
+HealthLog decode_health_log(const std::string& text);
+std::string encode_lines(const std::vector<std::string>& lines);
+std::vector<std::string> decode_lines(const std::string& text);
+
+// The outputs of a run that `dir` holds (probes.csv, summary.json, ..., fields and checkpoints), as paths.
+std::vector<std::string> run_outputs(const std::string& dir);
+
+// The data rows of DIR/probes.csv at or before time t (to within round-off), verbatim, after checking that its
+// header is `header`; none when the file does not exist.
+std::vector<std::string> probe_rows_until(const std::string& path, const std::string& header, double t);
+
+// The folder a checkpoint belongs to: DIR for DIR/checkpoints/checkpoint_*.h5, else the checkpoint's folder.
+std::string run_folder_of(const std::string& checkpoint);
+
+// Whether two paths name the same existing folder.
+bool same_folder(const std::string& a, const std::string& b);
+
+}  // namespace halfeti::app

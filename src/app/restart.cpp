@@ -1,0 +1,175 @@
+#include "halfeti/app/restart.hpp"
+
+#include <dirent.h>
+#include <sys/stat.h>
+#include <yaml-cpp/yaml.h>
+
+#include <cerrno>
+#include <climits>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "halfeti/core/error.hpp"
+
+namespace halfeti::app {
+
+namespace {
+
+void flatten(const YAML::Node& n, const std::string& path, std::map<std::string, std::string>& out) {
+  switch (n.Type()) {
+    case YAML::NodeType::Map:
+      if (n.size() == 0) out[path] = "{}";
+      for (const auto& kv : n) flatten(kv.second, path.empty() ? kv.first.as<std::string>() : path + "." + kv.first.as<std::string>(), out);
+      break;
+    case YAML::NodeType::Sequence:
+      out[path + ".size"] = std::to_string(n.size());
+      for (std::size_t i = 0; i < n.size(); ++i) flatten(n[i], path + "." + std::to_string(i), out);
+      break;
+    case YAML::NodeType::Scalar:
+      out[path] = n.Scalar();
+      break;
+    default:
+      out[path] = "~";
+  }
+}
+
+bool may_change(const std::string& key) {
+  return key == "scene.end_time" || key == "scene.description" || key.rfind("output.", 0) == 0;
+}
+
+std::string directory_part(const std::string& path) {
+  const auto p = path.find_last_of('/');
+  return p == std::string::npos ? std::string(".") : path.substr(0, p);
+}
+
+std::string base_part(const std::string& path) {
+  const auto p = path.find_last_of('/');
+  return p == std::string::npos ? path : path.substr(p + 1);
+}
+
+bool exists(const std::string& p) {
+  struct stat st {};
+  return ::stat(p.c_str(), &st) == 0;
+}
+
+}  // namespace
+
+std::string changed_physics_key(const std::string& saved_scene, const std::string& scene) {
+  std::map<std::string, std::string> a, b;
+  try {
+    flatten(YAML::Load(saved_scene), "", a);
+    flatten(YAML::Load(scene), "", b);
+  } catch (const YAML::Exception& e) {
+    HALFETI_USER_ERROR("restart: the checkpoint's scene does not parse: " << e.what());
+  }
+  for (const auto& [key, value] : b) {
+    if (may_change(key)) continue;
+    const auto it = a.find(key);
+    if (it == a.end()) return key + " (not in the checkpoint's scene, now " + value + ")";
+    if (it->second != value) return key + " (checkpoint " + it->second + ", now " + value + ")";
+  }
+  for (const auto& [key, value] : a)
+    if (!may_change(key) && b.find(key) == b.end()) return key + " (checkpoint " + value + ", now absent)";
+  return "";
+}
+
+std::string encode_health_log(const HealthLog& log) {
+  std::string out;
+  for (const auto& e : log) {
+    char head[96];
+    std::snprintf(head, sizeof head, "%a\t%lld\t%d\t", e.time, e.step, e.fatal ? 1 : 0);
+    std::string message = e.message;
+    for (char& c : message)
+      if (c == '\n' || c == '\t') c = ' ';
+    out += head + e.kind + "\t" + message + "\n";
+  }
+  return out;
+}
+
+HealthLog decode_health_log(const std::string& text) {
+  HealthLog log;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> f;
+    std::size_t start = 0;
+    for (int k = 0; k < 4; ++k) {
+      const std::size_t tab = line.find('\t', start);
+      if (tab == std::string::npos) HALFETI_USER_ERROR("restart: a health-log line of the checkpoint is malformed");
+      f.push_back(line.substr(start, tab - start));
+      start = tab + 1;
+    }
+    HealthEvent e;
+    e.time = std::strtod(f[0].c_str(), nullptr);
+    e.step = std::strtoll(f[1].c_str(), nullptr, 10);
+    e.fatal = f[2] == "1";
+    e.kind = f[3];
+    e.message = line.substr(start);
+    log.push_back(e);
+  }
+  return log;
+}
+
+std::string encode_lines(const std::vector<std::string>& lines) {
+  std::string out;
+  for (const auto& l : lines) out += l + "\n";
+  return out;
+}
+
+std::vector<std::string> decode_lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+std::vector<std::string> run_outputs(const std::string& dir) {
+  std::vector<std::string> out;
+  for (const char* f : {"summary.json", "probes.csv", "log.txt", "scene.resolved.yaml"})
+    if (exists(dir + "/" + f)) out.push_back(dir + "/" + f);
+  for (const char* sub : {"fields", "checkpoints"}) {
+    DIR* d = ::opendir((dir + "/" + sub).c_str());
+    if (d == nullptr) continue;
+    while (const dirent* e = ::readdir(d)) {
+      const std::string n = e->d_name;
+      const auto ends = [&](const std::string& s) { return n.size() > s.size() && n.compare(n.size() - s.size(), s.size(), s) == 0; };
+      if (ends(".h5") || ends(".xdmf") || ends(".partial") || ends(".tmp")) out.push_back(dir + "/" + sub + "/" + n);
+    }
+    ::closedir(d);
+  }
+  return out;
+}
+
+std::vector<std::string> probe_rows_until(const std::string& path, const std::string& header, double t) {
+  std::vector<std::string> rows;
+  std::ifstream in(path);
+  if (!in) return rows;
+  std::string line;
+  if (!std::getline(in, line)) return rows;
+  if (line != header)
+    HALFETI_USER_ERROR("restart: '" << path << "' has the columns '" << line << "', this scene's probes are '"
+                                    << header << "'");
+  const double limit = t + 1e-9 * std::max(1.0, std::abs(t));
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    if (std::strtod(line.c_str(), nullptr) > limit) break;
+    rows.push_back(line);
+  }
+  return rows;
+}
+
+std::string run_folder_of(const std::string& checkpoint) {
+  const std::string dir = directory_part(checkpoint);
+  return base_part(dir) == "checkpoints" ? directory_part(dir) : dir;
+}
+
+bool same_folder(const std::string& a, const std::string& b) {
+  char ra[PATH_MAX], rb[PATH_MAX];
+  if (::realpath(a.c_str(), ra) == nullptr || ::realpath(b.c_str(), rb) == nullptr) return false;
+  return std::strcmp(ra, rb) == 0;
+}
+
+}  // namespace halfeti::app

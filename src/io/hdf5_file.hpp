@@ -1,0 +1,65 @@
+// HDF5 helpers shared by the field series and the checkpoints (private to the io library): an owner for HDF5
+// identifiers, checked calls whose failure names what failed and why, and the collective 1-D slab write and the
+// whole-dataset read both file kinds are made of.
+#pragma once
+
+#include <hdf5.h>
+#include <mpi.h>
+
+#include <string>
+#include <vector>
+
+namespace halfeti::io::h5 {
+
+// What a failed call was doing: writing an output (an I/O error, exit status 6, with the system's reason when it
+// left one in errno) or reading a file the user named (bad input, exit status 2).
+enum class Use { kWrite, kRead };
+[[noreturn]] void fail(Use use, const std::string& what);
+
+inline void check(herr_t status, Use use, const std::string& what) {
+  if (status < 0) fail(use, what);
+}
+
+// Owns one HDF5 identifier and closes it with the matching H5*close.
+class Id {
+ public:
+  Id(hid_t id, herr_t (*close)(hid_t), Use use, const std::string& what) : id_(id), close_(close) {
+    if (id_ < 0) fail(use, what);
+  }
+  ~Id() {
+    if (id_ >= 0) close_(id_);
+  }
+  Id(const Id&) = delete;
+  Id& operator=(const Id&) = delete;
+  operator hid_t() const { return id_; }  // NOLINT(google-explicit-constructor)
+  // Closes now and checks the result (a file's close flushes it: a full disk shows here).
+  void close(const std::string& what) {
+    const hid_t id = id_;
+    id_ = -1;
+    check(close_(id), Use::kWrite, what);
+  }
+
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+void quiet();  // no HDF5 error stacks on stderr: our messages name what failed
+
+// Collective: this rank's `count` values at `offset` of a 1-D dataset of `total`, in `where` (a file or group).
+void write_slab(hid_t where, const std::string& name, hid_t type, const void* data, long long offset,
+                long long count, long long total, const std::string& file);
+
+template <class T>
+std::vector<T> read_all(hid_t where, const std::string& name, hid_t type, const std::string& file);
+
+// Scalar attributes of a file or group (writes are collective where the file is).
+void write_attribute(hid_t where, const std::string& name, double value, const std::string& file);
+void write_attribute(hid_t where, const std::string& name, const std::string& value, const std::string& file);
+double read_double_attribute(hid_t where, const std::string& name, const std::string& file);
+std::string read_string_attribute(hid_t where, const std::string& name, const std::string& file);
+
+// Collective file access over MPI-IO.
+hid_t mpio_access(MPI_Comm comm);
+
+}  // namespace halfeti::io::h5
