@@ -268,12 +268,15 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
     if (checkpoint)
       carried = probe_rows_until(run_folder_of(restart_path_) + "/probes.csv", io::ProbeWriter::header(names), t_);
   });
-  probe_out_ = std::make_unique<io::ProbeWriter>(out_dir_ + "/probes.csv", names, rank_ == 0, carried);
+  collective_outcome(comm_, 0, true, [&] {  // rank 0 opens the file: its failure is every rank's
+    probe_out_ = std::make_unique<io::ProbeWriter>(out_dir_ + "/probes.csv", names, rank_ == 0, carried);
+  });
   if (continuing_) {
     if (fluid_fields_) fluid_fields_->resume(t_);
     if (plate_fields_) plate_fields_->resume(t_);
   }
-  log_ = std::make_unique<io::RunLog>(out_dir_ + "/log.txt", rank_ == 0, options_.echo, continuing_);
+  collective_outcome(comm_, 0, true,
+                     [&] { log_ = std::make_unique<io::RunLog>(out_dir_ + "/log.txt", rank_ == 0, options_.echo, continuing_); });
   collective_outcome(comm_, 0, rank_ == 0, [&] {
     io::write_file_atomically(out_dir_ + "/scene.resolved.yaml", std::string("# resolved by halfeti ") + kVersion +
                                                                     " from " + scene_.file + "\n" +

@@ -78,7 +78,8 @@ void write_checkpoint(MPI_Comm comm, const std::string& path, const Checkpoint& 
   MPI_Allreduce(&local, &total, 1, MPI_LONG_LONG, MPI_SUM, comm);
   const auto blocks = shared_layout(comm, c.blocks);
   const auto texts = shared_layout(comm, c.texts);
-  {
+  try {
+    h5::CollectiveWrites collective(comm, partial);
     Id fapl(h5::mpio_access(comm), H5Pclose, Use::kWrite, "file access list");
     errno = 0;
     Id file(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), H5Fclose, Use::kWrite,
@@ -119,6 +120,9 @@ void write_checkpoint(MPI_Comm comm, const std::string& path, const Checkpoint& 
     }
     errno = 0;
     file.close("close '" + partial + "'");
+  } catch (const IoError&) {
+    if (rank == 0) std::remove(partial.c_str());  // no half-written checkpoint is left behind
+    throw;
   }
   rename_on_root(comm, partial, path);
 }

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sys/stat.h>
 
+#include "halfeti/core/collective.hpp"
 #include "halfeti/core/error.hpp"
 #include "hdf5_file.hpp"
 
@@ -48,7 +49,8 @@ std::string FieldSeries::write(double time, std::size_t n_local, const double* x
 
   // Written under a temporary name and renamed when complete: a file of the series is whole or absent.
   Frame frame{time, file_name, total[0], 0, {}, "Polyvertex", 1};
-  {
+  try {
+    h5::CollectiveWrites collective(comm_, partial);
     Id fapl(h5::mpio_access(comm_), H5Pclose, Use::kWrite, "file access list");
     errno = 0;
     Id file(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), H5Fclose, Use::kWrite,
@@ -73,10 +75,13 @@ std::string FieldSeries::write(double time, std::size_t n_local, const double* x
     }
     errno = 0;
     file.close("close '" + partial + "'");
+  } catch (const IoError&) {
+    if (rank == 0) std::remove(partial.c_str());  // no half-written file is left behind
+    throw;
   }
   rename_on_root(comm_, partial, path);
   frames_.push_back(frame);
-  if (rank == 0) write_xdmf();
+  collective_outcome(comm_, 0, rank == 0, [&] { write_xdmf(); });  // rank 0 writes; a failure stops every rank
   return path;
 }
 
@@ -87,7 +92,7 @@ void FieldSeries::resume(double time) {
   MPI_Comm_rank(comm_, &rank);
   frames_.clear();
   int kept = 0;
-  if (rank == 0) {
+  collective_outcome(comm_, 0, rank == 0, [&] {
     for (int k = 0;; ++k) {
       char buf[32];
       std::snprintf(buf, sizeof buf, "_%06d.h5", k);
@@ -111,7 +116,7 @@ void FieldSeries::resume(double time) {
     }
     kept = static_cast<int>(frames_.size());
     write_xdmf();
-  }
+  });
   MPI_Bcast(&kept, 1, MPI_INT, 0, comm_);
   if (rank != 0) frames_.resize(static_cast<std::size_t>(kept), Frame{0.0, "", 0, 0, {}, "", 1});
 }

@@ -1,18 +1,60 @@
 #include "hdf5_file.hpp"
 
+#include <sys/statvfs.h>
+
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
+#include <algorithm>
 
 #include "halfeti/core/error.hpp"
 
 namespace halfeti::io::h5 {
 
+
+namespace {
+MPI_Comm g_collective = MPI_COMM_NULL;  // set by CollectiveWrites
+std::string g_file;                     // the file it writes
+
+// HDF5's drivers do not always leave errno set; a full file system is the common cause, and it can be seen.
+std::string reason_of_failure() {
+  if (errno != 0) return std::strerror(errno);
+  if (g_file.empty()) return "";
+  const auto slash = g_file.find_last_of('/');
+  const std::string dir = slash == std::string::npos ? "." : g_file.substr(0, slash);
+  struct statvfs fs {};
+  if (::statvfs(dir.c_str(), &fs) == 0 && static_cast<double>(fs.f_bavail) * fs.f_frsize < 1024.0 * 1024.0)
+    return std::string(std::strerror(ENOSPC)) + " (less than 1 MiB free on the file system of '" + dir + "')";
+  return "";
+}
+}  // namespace
+
 void fail(Use use, const std::string& what) {
   if (use == Use::kRead) HALFETI_USER_ERROR("HDF5: " << what << " failed");
-  const int reason = errno;
-  if (reason != 0) HALFETI_IO_ERROR("HDF5: " << what << " failed: " << std::strerror(reason));
+  const std::string reason = reason_of_failure();
+  if (!reason.empty()) HALFETI_IO_ERROR("HDF5: " << what << " failed: " << reason);
   HALFETI_IO_ERROR("HDF5: " << what << " failed");
+}
+
+CollectiveWrites::CollectiveWrites(MPI_Comm comm, const std::string& file)
+    : previous_(g_collective), previous_file_(g_file) {
+  g_collective = comm;
+  g_file = file;
+}
+CollectiveWrites::~CollectiveWrites() {
+  g_collective = previous_;
+  g_file = previous_file_;
+}
+
+void check(herr_t status, Use use, const std::string& what) {
+  if (use == Use::kWrite && g_collective != MPI_COMM_NULL) {
+    int outcome[2] = {status < 0 ? 1 : 0, status < 0 ? errno : 0};  // failed anywhere; the system's reason
+    MPI_Allreduce(MPI_IN_PLACE, outcome, 2, MPI_INT, MPI_MAX, g_collective);
+    if (outcome[0] == 0) return;
+    errno = outcome[1];
+    fail(use, what);
+  }
+  if (status < 0) fail(use, what);
 }
 
 void quiet() {
@@ -45,13 +87,10 @@ void write_slab(hid_t where, const std::string& name, hid_t type, const void* da
   const hsize_t start[1] = {static_cast<hsize_t>(offset)}, cnt[1] = {static_cast<hsize_t>(count)};
   Id filespace(H5Dget_space(dset), H5Sclose, Use::kWrite, "file space of " + name);
   Id memspace(H5Screate_simple(1, cnt, nullptr), H5Sclose, Use::kWrite, "memory space of " + name);
-  if (count > 0) {
-    check(H5Sselect_hyperslab(filespace, H5S_SELECT_SET, start, nullptr, cnt, nullptr), Use::kWrite,
-          "select " + name);
-  } else {
-    check(H5Sselect_none(filespace), Use::kWrite, "select none " + name);
-    check(H5Sselect_none(memspace), Use::kWrite, "select none " + name);
-  }
+  // The same checks on every rank (they are collective under CollectiveWrites), whether it writes or not.
+  const herr_t selected = count > 0 ? H5Sselect_hyperslab(filespace, H5S_SELECT_SET, start, nullptr, cnt, nullptr)
+                                    : std::min(H5Sselect_none(filespace), H5Sselect_none(memspace));
+  check(selected, Use::kWrite, "select " + name);
   Id xfer(H5Pcreate(H5P_DATASET_XFER), H5Pclose, Use::kWrite, "transfer list");
   check(H5Pset_dxpl_mpio(xfer, H5FD_MPIO_COLLECTIVE), Use::kWrite, "collective transfer");
   errno = 0;

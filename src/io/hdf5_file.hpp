@@ -16,15 +16,29 @@ namespace halfeti::io::h5 {
 enum class Use { kWrite, kRead };
 [[noreturn]] void fail(Use use, const std::string& what);
 
-inline void check(herr_t status, Use use, const std::string& what) {
-  if (status < 0) fail(use, what);
-}
+// While one lives, the write checks are collective over its communicator: a file written collectively has every
+// rank make the same calls in the same order, and a call that fails on one rank (a full disk seen by the rank that
+// writes a block) must fail on all, or the others wait in the next collective call forever.
+class CollectiveWrites {
+ public:
+  // `file`: the path being written, for the reason of a failure (its file system's free space).
+  CollectiveWrites(MPI_Comm comm, const std::string& file);
+  ~CollectiveWrites();
+  CollectiveWrites(const CollectiveWrites&) = delete;
+  CollectiveWrites& operator=(const CollectiveWrites&) = delete;
+
+ private:
+  MPI_Comm previous_;
+  std::string previous_file_;
+};
+
+void check(herr_t status, Use use, const std::string& what);
 
 // Owns one HDF5 identifier and closes it with the matching H5*close.
 class Id {
  public:
   Id(hid_t id, herr_t (*close)(hid_t), Use use, const std::string& what) : id_(id), close_(close) {
-    if (id_ < 0) fail(use, what);
+    check(id_ < 0 ? -1 : 0, use, what);
   }
   ~Id() {
     if (id_ >= 0) close_(id_);
