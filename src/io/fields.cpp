@@ -63,6 +63,9 @@ std::string FieldSeries::write(double time, std::size_t n_local, const double* x
       h5::write_slab(file, f.name, H5T_NATIVE_DOUBLE, f.values, offset[0], local[0], total[0], partial);
       frame.fields.push_back(f.name);
     }
+    std::string order;  // the fields in their order of writing, for readers (HDF5 lists them by name)
+    for (const auto& n : frame.fields) order += (order.empty() ? "" : ",") + n;
+    h5::write_attribute(file, "fields", order, partial);
     if (cells) {
       const long long npc = cells->nodes_per_cell;
       h5::write_slab(file, "cells", H5T_NATIVE_INT64, cells->connectivity, offset[1] * npc, local[1] * npc,
@@ -194,6 +197,25 @@ FieldFrameData read_field_file(const std::string& path) {
     }
     d.names.push_back(n);
     d.values.push_back(h5::read_all<double>(file, n, H5T_NATIVE_DOUBLE, path));
+  }
+  if (H5Aexists(file, "fields") > 0) {  // the order of writing
+    std::vector<std::string> names;
+    std::vector<std::vector<double>> values;
+    const std::string order = h5::read_string_attribute(file, "fields", path);
+    for (std::size_t start = 0; start < order.size();) {
+      const std::size_t comma = std::min(order.find(',', start), order.size());
+      const std::string n = order.substr(start, comma - start);
+      const auto it = std::find(d.names.begin(), d.names.end(), n);
+      if (it != d.names.end()) {
+        names.push_back(n);
+        values.push_back(std::move(d.values[static_cast<std::size_t>(it - d.names.begin())]));
+      }
+      start = comma + 1;
+    }
+    if (names.size() == d.names.size()) {
+      d.names = std::move(names);
+      d.values = std::move(values);
+    }
   }
   if (!d.cells.empty()) {
     d.topology = h5::read_string_attribute(file, "topology", path);

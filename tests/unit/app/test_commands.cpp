@@ -71,7 +71,7 @@ TEST(Commands, ExitStatuses) {
 TEST(Commands, RunWritesProbesSummaryLogAndResolvedScene) {
   const std::string scene = write_scene("pulse.yaml", kPulseScene);
   const std::string out = kDir + "/pulse_out";
-  ASSERT_EQ(status_of("run " + scene + " --out " + out + " --set excitation.amplitude=2.0"), 0);
+  ASSERT_EQ(status_of("run " + scene + " --out " + out + " --overwrite --set excitation.amplitude=2.0"), 0);
   const auto probes = io::read_probe_csv(out + "/probes.csv");
   ASSERT_EQ(probes.names, (std::vector<std::string>{"t", "ag"}));
   ASSERT_EQ(probes.rows.size(), 51u);  // t = 0, 0.01, ..., 0.5

@@ -40,5 +40,6 @@ TEST(ProbeWriter, RoundTrip) {
 
 TEST(ProbeWriter, RejectsNamesThatBreakTheCsv) {
   EXPECT_THROW(io::ProbeWriter("/dev/null", {"a,b"}, false), InternalError);
-  EXPECT_THROW(io::ProbeWriter("/nonexistent/dir/probes.csv", {"a"}, true), UserError);
+  // An output that cannot be written is an I/O error (exit status 6), not bad input.
+  EXPECT_THROW(io::ProbeWriter("/nonexistent/dir/probes.csv", {"a"}, true), IoError);
 }
