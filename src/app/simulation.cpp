@@ -296,6 +296,9 @@ void Simulation::restore(const io::Checkpoint& c) {
     const auto it = c.texts.find(name);
     return it == c.texts.end() ? std::string() : it->second;
   };
+  if (text("written") != "between steps")
+    HALFETI_USER_ERROR("restart: '" << restart_path_ << "' was written " << text("written")
+                                    << " (for inspection); continue from an earlier checkpoint");
   const auto& run = block("run");
   if (run.size() != 5) HALFETI_USER_ERROR("restart: the run state of '" << restart_path_ << "' is malformed");
   t_ = run[0];
@@ -515,6 +518,9 @@ void Simulation::write_checkpoint(const std::string& label) {
   c.blocks["run"] = {t_, static_cast<double>(steps_), initial_mass_, max_density_variation_,
                      earlier_wall_ + (run_start_ > 0.0 ? started - run_start_ : 0.0)};
   c.texts["scene"] = scene_.resolved_text();
+  // A failure inside a step leaves a state for inspection, not one a step can start from.
+  const bool restartable = label != "at the failure";
+  c.texts["written"] = restartable ? "between steps" : "at a failure inside a step";
   if (parts_.fluid) {
     sph::Fluid::State st = parts_.fluid->state();
     c.particles = {std::move(st.gid), std::move(st.x),  std::move(st.y),   std::move(st.vx),

@@ -388,7 +388,6 @@ void Fluid::migrate() {
 }
 
 Fluid::State Fluid::state() const {
-  HALFETI_CHECK(!forces_ready_ && !predicted_, "Fluid::state() is taken between steps");
   State s;
   const auto owned = [&](const auto& v) { return std::vector(v.begin(), v.begin() + n_owned_); };
   s.gid = owned(gid_);

@@ -109,7 +109,8 @@ class Fluid {
     std::vector<HealthEvent> events;
     std::vector<std::string> active_warnings;
   };
-  State state() const;
+  State state() const;  // (taken inside a step, at a failure, it is for inspection: between_steps() is false)
+  bool between_steps() const { return !forces_ready_ && !predicted_; }
   void restore(const State& all);  // collective; the particles partitioned afresh over this run's ranks
   // Cell -> owning rank map of the current decomposition (diagnostics of the balance).
   const std::vector<int>& cell_owner() const { return owner_; }

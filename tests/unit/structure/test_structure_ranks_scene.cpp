@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "halfeti/io/checkpoint.hpp"
 #include "run_scene.hpp"
 
 using namespace halfeti;
@@ -36,8 +37,13 @@ TEST(StructureRanksScene, TwoStructureRanksGiveTheProbesOfOne) {
     for (std::size_t i = 0; i < x.size(); ++i) EXPECT_NEAR(x[i], y[i], 1e-7 * scale) << name << " at row " << i;
   }
   EXPECT_GT(a.column("tip_x")[0], 0.1 * 0.08);  // a large deflection, not a trivial state
-  // Outputs are written once: the plate's checkpoint holds one copy of the nodes on either rank count.
-  EXPECT_EQ(test::read_text(one + "/checkpoints/plate_state.xdmf"), test::read_text(two + "/checkpoints/plate_state.xdmf"));
+  // Outputs are written once: the plate's field series holds one copy of the nodes on either rank count, and so
+  // does its checkpoint state.
+  EXPECT_EQ(test::read_text(one + "/fields/plate.xdmf"), test::read_text(two + "/fields/plate.xdmf"));
+  const auto c1 = io::list_checkpoints(one + "/checkpoints"), c2 = io::list_checkpoints(two + "/checkpoints");
+  ASSERT_EQ(c1.size(), 1u);
+  ASSERT_EQ(c2.size(), 1u);
+  EXPECT_EQ(io::read_checkpoint(c1[0]).blocks.at("plate").size(), io::read_checkpoint(c2[0]).blocks.at("plate").size());
 }
 
 TEST(StructureRanksScene, MoreRanksThanTheRunIsOneError) {
