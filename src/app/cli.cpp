@@ -74,6 +74,11 @@ Command parse_command_line(const std::vector<std::string>& args) {
       if (i + 1 >= args.size()) HALFETI_USER_ERROR("option " << option << " needs a value");
       return args[++i];
     };
+    if (a == "--help" || a == "-h") {  // `halfeti run --help`, `halfeti check --help`
+      c = Command{};
+      c.kind = Command::Kind::kHelp;
+      return c;
+    }
     if (a == "--") {
       if (c.kind != Command::Kind::kRun) HALFETI_USER_ERROR("PETSc options (after --) go with 'halfeti run'");
       c.petsc_args.assign(args.begin() + static_cast<long>(i) + 1, args.end());

@@ -68,6 +68,19 @@ const char* signal_name(int s) {
   }
 }
 
+// The next time of an output schedule once the run has reached t: the sequence interval, interval + interval, ...
+// (each the sum of the one before and the interval), skipping whole intervals at once when a step spans very many
+// (an interval far below the time step) and never stuck where the interval is below the time's round-off.
+double next_in_schedule(double next, double interval, double t, double tol) {
+  if (!(interval > 0.0)) return next;
+  if (const double behind = (t + tol - next) / interval; behind > 1000.0) next += std::floor(behind) * interval;
+  while (next <= t + tol) {
+    const double after = next + interval;
+    next = after > next ? after : std::nextafter(t + tol, HUGE_VAL);
+  }
+  return next;
+}
+
 std::string utc_now() {
   const std::time_t now = std::time(nullptr);
   char buf[32];
@@ -462,7 +475,9 @@ double Simulation::advance(double remaining) {
     step_structure(t_, dt);
     return dt;
   }
-  return std::min(scene_.root().section("output").real("probe_interval"), remaining);
+  // No parts: the clock advances by the probe interval (at most a million steps over the run).
+  const double end = scene_.root().section("scene").real("end_time");
+  return std::min(std::max(scene_.root().section("output").real("probe_interval"), 1e-6 * end), remaining);
 }
 
 void Simulation::sample(double t) {
@@ -615,12 +630,7 @@ int Simulation::run() {
   // A step ends within round-off of a scheduled time counts as reaching it. The schedules are the sequences
   // dt, dt + dt, ... (each the sum of the one before and dt), resumed after t on a restart.
   const double tol = 1e-9 * end;
-  const auto first_after = [&](double interval) {
-    double next = interval;
-    if (interval > 0.0)
-      while (next <= t_ + tol) next += interval;
-    return next;
-  };
+  const auto first_after = [&](double interval) { return next_in_schedule(interval, interval, t_, tol); };
   double next_probe = first_after(probe_dt), next_field = first_after(field_dt),
          next_checkpoint = first_after(checkpoint_dt), next_progress = first_after(progress_dt);
   const double loop_start = wall_now();
@@ -641,19 +651,19 @@ int Simulation::run() {
         ++steps_;
         if (t_ >= next_probe - tol) {
           sample(t_);
-          while (next_probe <= t_ + tol) next_probe += probe_dt;
+          next_probe = next_in_schedule(next_probe, probe_dt, t_, tol);
         }
         if (field_dt > 0 && t_ >= next_field - tol) {
           write_fields(t_);
-          while (next_field <= t_ + tol) next_field += field_dt;
+          next_field = next_in_schedule(next_field, field_dt, t_, tol);
         }
         if (checkpoint_dt > 0 && t_ >= next_checkpoint - tol) {
           write_checkpoint("scheduled");
-          while (next_checkpoint <= t_ + tol) next_checkpoint += checkpoint_dt;
+          next_checkpoint = next_in_schedule(next_checkpoint, checkpoint_dt, t_, tol);
         }
         if (t_ >= next_progress - tol) {
           log_->line(progress_line(dt, wall_now() - start));
-          while (next_progress <= t_ + tol) next_progress += progress_dt;
+          next_progress = next_in_schedule(next_progress, progress_dt, t_, tol);
         }
         step_wall = std::max(step_wall, wall_now() - step_start);
         stopped = stop_reason(wall_now() - start, step_wall);

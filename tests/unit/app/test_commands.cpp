@@ -68,6 +68,25 @@ TEST(Commands, ExitStatuses) {
   EXPECT_NE(file_text(kDir + "/err.txt").find("cannot open accelerogram"), std::string::npos);
 }
 
+TEST(Commands, HelpAfterACommandAndSchedulesFinerThanAStepEnd) {
+  EXPECT_EQ(status_of("run --help"), 0);
+  EXPECT_NE(file_text(kDir + "/out.txt").find("--restart"), std::string::npos);
+  EXPECT_EQ(status_of("check --help"), 0);
+  // An end time or an output interval far below the time step (here 1e-300 s) once kept the schedule loop adding
+  // an interval that no longer changed the next time: the run must end (ctest's timeout would catch a hang).
+  const std::string scene = write_scene("tiny.yaml", kPulseScene);
+  const std::string out = kDir + "/tiny_out";
+  EXPECT_EQ(status_of("run " + scene + " --out " + out + " --overwrite --set scene.end_time=1e-300"), 0);
+  EXPECT_EQ(status_of("run " + scene + " --out " + out + " --overwrite --set output.probe_interval=1e-300 "
+                      "--set scene.end_time=1e-300"),
+            0);
+  EXPECT_EQ(status_of("run " + scene + " --out " + out + " --overwrite --set output.field_interval=1e-300 "
+                      "--set output.checkpoint_interval=1e-300 --set output.progress_interval=1e-300 "
+                      "--set scene.end_time=1e-3"),
+            0);
+  EXPECT_NE(file_text(out + "/summary.json").find("\"exit_status\": \"ok\""), std::string::npos);
+}
+
 TEST(Commands, RunWritesProbesSummaryLogAndResolvedScene) {
   const std::string scene = write_scene("pulse.yaml", kPulseScene);
   const std::string out = kDir + "/pulse_out";
