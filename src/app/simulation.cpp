@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <unistd.h>
 
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -110,6 +111,15 @@ namespace {
 void read_parameters(const scene::Scene& scene, Parts& parts) {
   const scene::Node root = scene.root();
   parts.scene_dir = directory_of(scene.file);
+  // The name names the output folder out/<name>: one folder name, not a path.
+  const std::string name = root.section("scene").string("name");
+  const bool plain = !name.empty() && name != "." && name != ".." &&
+                     std::all_of(name.begin(), name.end(), [](char c) {
+                       return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+                     });
+  if (!plain)
+    HALFETI_USER_ERROR("scene.name '" << name << "': letters, digits, '_', '-' and '.' only (it names the folder "
+                                          "out/<name>)");
   parts.gravity = root.real("gravity");
   parts.motion = excitation::make_ground_motion(root.section("excitation"), parts.scene_dir);
   const double end = root.section("scene").real("end_time");

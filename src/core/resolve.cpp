@@ -273,6 +273,8 @@ void apply_override(YAML::Node& raw, const std::string& assignment, Origin& orig
     if (idx >= last.size()) HALFETI_USER_ERROR("--set " << assignment << ": list index " << idx << " out of range");
     last[idx] = value;
   } else {
+    if (last.IsScalar())
+      HALFETI_USER_ERROR("--set " << assignment << ": '" << display << "' holds a value, not a section");
     last[parts.back()] = value;
   }
   // Messages name the override with the path as the resolver spells it (list items as name[i]).

@@ -1,5 +1,9 @@
 #include "halfeti/core/scene.hpp"
 
+#include <sys/stat.h>
+
+#include <algorithm>
+
 #include <fstream>
 #include <sstream>
 
@@ -51,6 +55,28 @@ std::string Scene::resolved_text() const {
   return std::string(e.c_str()) + "\n";
 }
 
+namespace {
+// yaml-cpp keeps every entry of a mapping that repeats a key (and its lookups find the first): a repeated key is
+// an error here, as PyYAML in the tools would silently keep the last.
+void reject_duplicate_keys(const YAML::Node& n, const std::string& file, const std::string& path) {
+  if (n.IsSequence()) {
+    for (std::size_t i = 0; i < n.size(); ++i) reject_duplicate_keys(n[i], file, path + "[" + std::to_string(i) + "]");
+    return;
+  }
+  if (!n.IsMap()) return;
+  std::vector<std::string> seen;
+  for (const auto& kv : n) {
+    const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("(a non-scalar key)");
+    const std::string full = path.empty() ? key : path + "." + key;
+    if (std::find(seen.begin(), seen.end(), key) != seen.end())
+      HALFETI_USER_ERROR(file << ":" << kv.first.Mark().line + 1 << ": key '" << full
+                              << "' appears twice in the same section (which one was meant?)");
+    seen.push_back(key);
+    reject_duplicate_keys(kv.second, file, full);
+  }
+}
+}  // namespace
+
 Scene parse_scene(const std::string& text, const std::string& file, const std::vector<std::string>& overrides,
                   const Schema& schema) {
   YAML::Node raw;
@@ -61,11 +87,16 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::v
   }
   if (raw.IsDefined() && !raw.IsNull() && !raw.IsMap())
     HALFETI_USER_ERROR(file << ": a scene is a YAML mapping of sections (scene:, fluid:, ...), found something else");
+  reject_duplicate_keys(raw, file, "");
   Origin origin{file, {}};
-  for (const auto& o : overrides) apply_override(raw, o, origin);
   Scene s;
   s.file = file;
-  s.resolved = resolve(raw, schema, origin);
+  try {
+    for (const auto& o : overrides) apply_override(raw, o, origin);
+    s.resolved = resolve(raw, schema, origin);
+  } catch (const YAML::Exception& e) {  // a shape the checks above did not foresee: still bad input, not a crash
+    HALFETI_USER_ERROR(file << ": the scene's structure is not what its keys expect (" << e.msg << ")");
+  }
   return s;
 }
 
@@ -78,6 +109,9 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   std::string payload;
   if (rank == 0) {
     try {
+      struct stat st {};
+      if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+        HALFETI_USER_ERROR("scene file '" << path << "' is a folder; give the scene's .yaml file");
       std::ifstream in(path);
       if (!in) HALFETI_USER_ERROR("cannot open scene file '" << path << "': no such file or not readable");
       std::stringstream buf;

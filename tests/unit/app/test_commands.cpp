@@ -62,6 +62,12 @@ TEST(Commands, ExitStatuses) {
             "halfeti: error: cannot open scene file '" + kDir + "/no_such_scene.yaml': no such file or not readable\n");
   EXPECT_EQ(status_of("check " + scene + " --set excitation.period=-1"), 2);
   EXPECT_EQ(status_of("run " + scene + " --out /proc/forbidden/out"), 2);
+  // A folder for a scene, and --set through a value: bad input, one line (once a yaml-cpp exception, status 4).
+  EXPECT_EQ(status_of("run " + kDir), 2);
+  EXPECT_EQ(file_text(kDir + "/err.txt"), "halfeti: error: scene file '" + kDir + "' is a folder; give the scene's .yaml file\n");
+  EXPECT_EQ(status_of("check " + scene + " --set scene.end_time.x=1"), 2);
+  EXPECT_EQ(file_text(kDir + "/err.txt"),
+            "halfeti: error: --set scene.end_time.x=1: 'scene.end_time' holds a value, not a section\n");
   const std::string bad_record = write_scene(
       "record.yaml", "scene: {name: r, end_time: 1}\nexcitation: {kind: record, file: missing.csv}\n");
   EXPECT_EQ(status_of("check " + bad_record), 2);

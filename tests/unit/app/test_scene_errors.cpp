@@ -85,6 +85,13 @@ const Case kCases[] = {
     {"broken YAML", "scene: {name: s, end_time: 1\n", "bad.yaml:2:1: not valid YAML: end of map flow not found"},
     {"not a mapping", "- a\n- b\n",
      "bad.yaml: a scene is a YAML mapping of sections (scene:, fluid:, ...), found something else"},
+    {"a section twice", "scene: {name: s, end_time: 1}\nscene: {name: t, end_time: 2}\n",
+     "bad.yaml:2: key 'scene' appears twice in the same section (which one was meant?)"},
+    {"a key twice", "scene: {name: s, end_time: 1, end_time: 2}\n",
+     "bad.yaml:1: key 'scene.end_time' appears twice in the same section (which one was meant?)"},
+    {"a key twice in a list item",
+     "scene: {name: s, end_time: 1}\nprobes:\n  - {name: a, name: b, kind: ground_acceleration}\n",
+     "bad.yaml:3: key 'probes[0].name' appears twice in the same section (which one was meant?)"},
 };
 
 std::string halfeti_binary() { return std::string(HALFETI_BINARY_DIR) + "/src/app/halfeti"; }
@@ -162,6 +169,9 @@ TEST(SceneErrors, ChecksAcrossKeysNameTheFileAndKey) {
        "fluid: {spacing: 0.005, water: [{from: [0, 0], to: [0.3, 0.1]}]}\nstructure: {base: [0.15, 0]}\n"
        "probes: [{name: c, kind: plate_load, part: contact, sign: push, component: x}]\n",
        "probes[0].sign: 'push' splits the plate-wall part only; the contact only pushes"},
+      // The name names the output folder: a path there would write outside out/.
+      {"scene: {name: ../../etc, end_time: 1}\n",
+       "scene.name '../../etc': letters, digits, '_', '-' and '.' only (it names the folder out/<name>)"},
       {"scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0], time_step: 0.001}\n"
        "probes: [{name: w, kind: plate_load_work}]\n",
        "probes[0]: this probe reads the plate-water coupling, but the scene has no water"},
