@@ -62,11 +62,13 @@ std::shared_ptr<const Schema> fluid_schema() {
     s->add(Key::list("water", "rectangles of still water", water_block_schema()).min_items(1).required());
     s->add(Key::list("walls", "rigid internal walls", wall_schema()));
     s->add(Key::boolean("lid", "close the tank with a wall at its top").def(false));
-    s->add(Key::real("density", "rest density rho0", "kg/m^3").def(1000.0).positive());
-    s->add(Key::real("sound_speed", "c0 of eq. 9; 0 chooses it by eq. 10 from the depth and the peak excitation",
+    s->add(Key::real("density", "rest density rho0 (a liquid: at most 2e4)", "kg/m^3").def(1000.0).positive().at_most(2e4));
+    s->add(Key::real("sound_speed", "c0 of eq. 9; 0 chooses it by eq. 10 from the depth and the peak excitation "
+                     "(at most 1e4: water's own is 1480)",
                      "m/s")
                .def(0.0)
-               .non_negative());
+               .non_negative()
+               .at_most(1e4));
     s->add(Key::real("max_density_variation", "allowed |rho - rho0| / rho0 (eq. 10 and the health monitor)")
                .def(0.01)
                .positive()

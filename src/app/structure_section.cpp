@@ -84,9 +84,12 @@ std::shared_ptr<const Schema> structure_schema() {
     s->add(Key::integer("cells_along", "cells (elements) along the height (2 x 60 is the paper's 120)").def(60).in(1, 4096));
     s->add(Key::choice("element", "finite element of the plate", element_registry().names()).def("q9"));
     s->add(Key::choice("material", "hyperelastic law", material_registry().names()).def("neo_hookean"));
-    s->add(Key::real("youngs_modulus", "E", "Pa").def(10e6).positive());
-    s->add(Key::real("poisson_ratio", "nu (rubber 0.45-0.49)").def(0.45).above(-1.0).below(0.5));
-    s->add(Key::real("density", "rubber density (not stated by the paper)", "kg/m^3").def(1150.0).positive());
+    s->add(Key::real("youngs_modulus", "E (at most 1e12 Pa, stiffer than steel)", "Pa").def(10e6).positive().at_most(1e12));
+    s->add(Key::real("poisson_ratio", "nu (rubber 0.45-0.49; at most 0.499: the bulk modulus grows as 1 / (1 - 2 nu))")
+               .def(0.45)
+               .above(-1.0)
+               .at_most(0.499));
+    s->add(Key::real("density", "rubber density (not stated by the paper)", "kg/m^3").def(1150.0).positive().at_most(1e5));
     s->add(Key::choice("hypothesis", "out-of-plane hypothesis", hypothesis_registry().names()).def("plane_strain"));
     s->add(Key::real("newmark_beta", "Newmark beta (1/4: trapezoidal rule)").def(0.25).above(0.0).at_most(0.5));
     s->add(Key::real("newmark_gamma", "Newmark gamma (1/2: no numerical damping)").def(0.5).in(0.5, 1.0));
@@ -121,8 +124,8 @@ std::shared_ptr<const Schema> cable_schema() {
     s->add(Key::string("node", "plate node it holds: top_left, top_centre, top_right, ... (hanging: bottom_left, ...)").required());
     s->add(Key::integer("count", "real cables across the tank's width").def(1).in(1, 100000));
     s->add(Key::real("area", "cross-section of one cable", "m^2").required().positive());
-    s->add(Key::real("modulus", "Young's modulus of the cable", "Pa").required().positive());
-    s->add(Key::real("density", "cable density", "kg/m^3").required().positive());
+    s->add(Key::real("modulus", "Young's modulus of the cable (at most 1e12)", "Pa").required().positive().at_most(1e12));
+    s->add(Key::real("density", "cable density", "kg/m^3").required().positive().at_most(1e5));
     s->add(Key::boolean("submerged", "buoyant in the water (weight uses density - water density)").def(true));
     s->add(Key::real("unstretched_length", "unstretched length L0", "m").positive());
     s->add(Key::real("initial_stress", "tension stress at the plate end in the initial state", "Pa").positive());
@@ -210,6 +213,18 @@ std::vector<CableSetup> cable_setups(const scene::Node& root, const StructureSet
     if (!names.insert(cs.name).second) HALFETI_USER_ERROR(c.key_path("name") << ": cable name '" << cs.name << "' used twice");
     const auto a = c.point("anchor");
     cs.anchor = {a[0], a[1]};
+    // A cable is anchored on the tank: on its floor or a side wall (within 1 % of the tank's size), not in mid-water
+    // or outside it.
+    if (root.has("tank")) {
+      const double L = root.section("tank").real("length"), H = root.section("tank").real("height");
+      const double tol = 0.01 * std::max(L, H);
+      const bool inside = a[0] >= -tol && a[0] <= L + tol && a[1] >= -tol && a[1] <= H + tol;
+      const bool on_wall = std::abs(a[0]) <= tol || std::abs(a[0] - L) <= tol || std::abs(a[1]) <= tol;
+      if (!inside || !on_wall)
+        HALFETI_USER_ERROR(c.key_path("anchor") << ": [" << a[0] << ", " << a[1] << "] m is not on the tank's floor or a "
+                                                   "side wall (the tank is " << L << " x " << H << " m; within "
+                                                << tol << " m of a wall)");
+    }
     cs.node = c.string("node");
     const auto it = mesh.named_nodes.find(cs.node);
     if (it == mesh.named_nodes.end())

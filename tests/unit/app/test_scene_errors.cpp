@@ -69,7 +69,11 @@ const Case kCases[] = {
      "scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0], orientation: upside_down, time_step: 0.001}\n",
      "bad.yaml:2:43: structure.orientation: expected one of standing, hanging, found 'upside_down'"},
     {"incompressible rubber", "scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0], poisson_ratio: 0.5}\n",
-     "bad.yaml:2:45: structure.poisson_ratio: expected a number > -1 and < 0.5, found '0.5'"},
+     "bad.yaml:2:45: structure.poisson_ratio: expected a number > -1 and <= 0.499, found '0.5'"},
+    {"nearly incompressible rubber", "scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0], poisson_ratio: 0.49999999}\n",
+     "bad.yaml:2:45: structure.poisson_ratio: expected a number > -1 and <= 0.499, found '0.49999999'"},
+    {"a liquid denser than any", "scene: {name: s, end_time: 1}\nfluid: {spacing: 0.01, density: 1e308, water: [{from: [0, 0], to: [0.3, 0.1]}]}\n",
+     "bad.yaml:2:33: fluid.density: expected a number > 0 and <= 20000 (kg/m^3), found '1e308'"},
     {"cable without area",
      "scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0]}\n"
      "cables: [{name: a, anchor: [0, 0.01], node: top_left, area: 0, modulus: 1e6, density: 1000}]\n",
@@ -169,6 +173,15 @@ TEST(SceneErrors, ChecksAcrossKeysNameTheFileAndKey) {
        "fluid: {spacing: 0.005, water: [{from: [0, 0], to: [0.3, 0.1]}]}\nstructure: {base: [0.15, 0]}\n"
        "probes: [{name: c, kind: plate_load, part: contact, sign: push, component: x}]\n",
        "probes[0].sign: 'push' splits the plate-wall part only; the contact only pushes"},
+      // A cable's anchor is on the tank: not outside it, not in mid-water.
+      {"scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\nstructure: {base: [0.15, 0], time_step: 0.001}\n"
+       "cables: [{name: a, anchor: [-1e300, 0.01], node: top_left, area: 1e-6, modulus: 1e6, density: 1000, "
+       "initial_stress: 1e3}]\n",
+       "cables[0].anchor: [-1e+300, 0.01] m is not on the tank's floor or a side wall"},
+      {"scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\nstructure: {base: [0.15, 0], time_step: 0.001}\n"
+       "cables: [{name: a, anchor: [0.1, 0.2], node: top_left, area: 1e-6, modulus: 1e6, density: 1000, "
+       "initial_stress: 1e3}]\n",
+       "cables[0].anchor: [0.1, 0.2] m is not on the tank's floor or a side wall"},
       // The name names the output folder: a path there would write outside out/.
       {"scene: {name: ../../etc, end_time: 1}\n",
        "scene.name '../../etc': letters, digits, '_', '-' and '.' only (it names the folder out/<name>)"},
