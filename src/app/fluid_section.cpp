@@ -134,6 +134,20 @@ sph::FluidParams fluid_params(const scene::Node& root, double peak_ground_accele
       HALFETI_USER_ERROR(w.path() << ": water from [" << a[0] << ", " << a[1] << "] to [" << b[0] << ", " << b[1]
                                   << "] does not fit in the tank [0, " << p.tank_length << "] x [0, "
                                   << p.tank_height << "]");
+    // The lattice shows the surface to within a spacing: a smaller wave would live in the initial pressure only.
+    if (block.surface_amplitude != 0.0 && std::abs(block.surface_amplitude) < 0.5 * p.spacing)
+      HALFETI_USER_ERROR(w.key_path("surface_amplitude") << ": " << block.surface_amplitude
+                                                         << " m is below half the spacing (" << 0.5 * p.spacing
+                                                         << " m), which the particle lattice cannot show; use 0 or "
+                                                            "at least dx / 2");
+    // Two blocks over the same place would put two particles there.
+    for (std::size_t k = 0; k < p.water.size(); ++k) {
+      const auto& o = p.water[k];
+      const double top = block.y1 + std::abs(block.surface_amplitude), other_top = o.y1 + std::abs(o.surface_amplitude);
+      if (std::min(block.x1, o.x1) > std::max(block.x0, o.x0) && std::min(top, other_top) > std::max(block.y0, o.y0))
+        HALFETI_USER_ERROR(w.path() << ": water from [" << a[0] << ", " << a[1] << "] to [" << b[0] << ", " << b[1]
+                                    << "] overlaps fluid.water[" << k << "]");
+    }
     p.water.push_back(block);
   }
   for (const auto& w : f.list("walls")) {

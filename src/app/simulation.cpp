@@ -257,6 +257,7 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
   if (parts_.fluid_params) {
     ScopedTimer timer(timers_, "setup");
     parts_.fluid = std::make_unique<sph::Fluid>(comm_, *parts_.fluid_params, parts_.motion.get());
+    initial_particles_ = parts_.fluid->global_count();  // the lattice's (a restart's is built before its restore)
     fluid_fields_ = std::make_unique<io::FieldSeries>(comm_, out_dir_ + "/fields", "fluid");
   }
   if (parts_.structure_setup) {
@@ -763,7 +764,8 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
   prov.set("restarted_from", restart_path_.empty() ? io::Json() : io::Json(restart_path_));
   j.set("provenance", prov);
   j.set("ranks", size_);
-  j.set("particles", particles);
+  j.set("particles", particles);  // now (water over the open top leaves the run)
+  j.set("initial_particles", initial_particles_);
   j.set("structure_dofs", dofs);
   j.set("cables", static_cast<int>(parts_.cable_setups.size()));
   j.set("steps", steps_);

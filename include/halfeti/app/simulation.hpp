@@ -79,7 +79,7 @@ class Simulation {
   std::unique_ptr<io::FieldSeries> fluid_fields_, plate_fields_;
   PhaseTimers timers_;
   double t_ = 0.0;
-  long long steps_ = 0, steps_at_start_ = 0, last_checkpoint_step_ = -1;
+  long long steps_ = 0, steps_at_start_ = 0, last_checkpoint_step_ = -1, initial_particles_ = 0;
   double initial_mass_ = 0.0, max_density_variation_ = 0.0;
   std::string restart_path_;  // the checkpoint continued from ("" for a fresh run)
   bool continuing_ = false;   // the restart writes into the folder of the run it continues

@@ -182,6 +182,13 @@ TEST(SceneErrors, ChecksAcrossKeysNameTheFileAndKey) {
        "cables: [{name: a, anchor: [0.1, 0.2], node: top_left, area: 1e-6, modulus: 1e6, density: 1000, "
        "initial_stress: 1e3}]\n",
        "cables[0].anchor: [0.1, 0.2] m is not on the tank's floor or a side wall"},
+      // Water blocks: twice over the same place, or a surface wave the lattice cannot show.
+      {"scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
+       "fluid: {spacing: 0.01, water: [{from: [0, 0], to: [0.2, 0.1]}, {from: [0.1, 0], to: [0.3, 0.1]}]}\n",
+       "fluid.water[1]: water from [0.1, 0] to [0.3, 0.1] overlaps fluid.water[0]"},
+      {"scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
+       "fluid: {spacing: 0.01, water: [{from: [0, 0], to: [0.3, 0.1], surface_amplitude: 0.002}]}\n",
+       "fluid.water[0].surface_amplitude: 0.002 m is below half the spacing (0.005 m)"},
       // The name names the output folder: a path there would write outside out/.
       {"scene: {name: ../../etc, end_time: 1}\n",
        "scene.name '../../etc': letters, digits, '_', '-' and '.' only (it names the folder out/<name>)"},
