@@ -1,5 +1,7 @@
 // Reading accelerogram CSV files (e.g. inputs/records/elcentro_ns.csv).
 #include <cmath>
+#include <sys/stat.h>
+
 #include <fstream>
 #include <sstream>
 
@@ -14,6 +16,9 @@ constexpr double kStandardGravity = 9.80665;
 
 std::unique_ptr<GroundMotion> read_record_csv(const std::string& path, const std::string& units, double scale,
                                               double start, double end, double time_shift) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    HALFETI_USER_ERROR("accelerogram '" << path << "' is a folder, not a record file");
   std::ifstream in(path);
   if (!in) HALFETI_USER_ERROR("cannot open accelerogram '" << path << "': no such file or not readable");
   double unit_factor = 1.0;

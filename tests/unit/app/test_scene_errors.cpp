@@ -160,6 +160,7 @@ TEST(SceneErrors, ChecksAcrossKeysNameTheFileAndKey) {
        "structure.time_step: required when the scene has no `fluid:`"},
       {"scene: {name: s, end_time: 1}\nexcitation: {kind: record, file: missing.csv}\n",
        "cannot open accelerogram"},
+      {"scene: {name: s, end_time: 1}\nexcitation: {kind: record, file: .}\n", "is a folder, not a record file"},
       // A hanging plate (a gate) reaches down from its clamp: below the floor it does not fit; its nodes have the
       // tank frame's names, so the standing plate's top_right is unknown.
       {"scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
