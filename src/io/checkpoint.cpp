@@ -80,10 +80,7 @@ void write_checkpoint(MPI_Comm comm, const std::string& path, const Checkpoint& 
   const auto texts = shared_layout(comm, c.texts);
   try {
     h5::CollectiveWrites collective(comm, partial);
-    Id fapl(h5::mpio_access(comm), H5Pclose, Use::kWrite, "file access list");
-    errno = 0;
-    Id file(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), H5Fclose, Use::kWrite,
-            "create '" + partial + "'");
+    Id file(h5::create_collective(comm, partial), H5Fclose, Use::kWrite, "create '" + partial + "'");
     h5::write_attribute(file, "halfeti_checkpoint", kFormat, partial);
     h5::write_attribute(file, "time", c.time, partial);
     h5::write_attribute(file, "steps", static_cast<double>(c.steps), partial);
@@ -100,24 +97,18 @@ void write_checkpoint(MPI_Comm comm, const std::string& path, const Checkpoint& 
         h5::write_slab(group, name, H5T_NATIVE_DOUBLE, v->data(), offset, local, total, partial);
       }
     }
-    {
-      Id group(H5Gcreate2(file, "blocks", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, Use::kWrite,
-               "group blocks in '" + partial + "'");
-      for (const auto& [name, size] : blocks) {
-        const auto it = c.blocks.find(name);
-        HALFETI_CHECK(it != c.blocks.end(), "checkpoint block '" << name << "' missing on rank " << rank);
-        h5::write_slab(group, name, H5T_NATIVE_DOUBLE, it->second.data(), 0, rank == 0 ? size : 0, size, partial);
+    // Replicated state: rank 0's values, the datasets created by every rank.
+    const auto rank0_group = [&](const char* group_name, const auto& layout, const auto& values, hid_t type) {
+      Id group(H5Gcreate2(file, group_name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, Use::kWrite,
+               std::string("group ") + group_name + " in '" + partial + "'");
+      for (const auto& [name, size] : layout) {
+        const auto it = values.find(name);
+        HALFETI_CHECK(it != values.end(), "checkpoint " << group_name << " '" << name << "' missing on rank " << rank);
+        h5::write_slab(group, name, type, it->second.data(), 0, rank == 0 ? size : 0, size, partial);
       }
-    }
-    {
-      Id group(H5Gcreate2(file, "texts", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, Use::kWrite,
-               "group texts in '" + partial + "'");
-      for (const auto& [name, size] : texts) {
-        const auto it = c.texts.find(name);
-        HALFETI_CHECK(it != c.texts.end(), "checkpoint text '" << name << "' missing on rank " << rank);
-        h5::write_slab(group, name, H5T_NATIVE_CHAR, it->second.data(), 0, rank == 0 ? size : 0, size, partial);
-      }
-    }
+    };
+    rank0_group("blocks", blocks, c.blocks, H5T_NATIVE_DOUBLE);
+    rank0_group("texts", texts, c.texts, H5T_NATIVE_CHAR);
     errno = 0;
     file.close("close '" + partial + "'");
   } catch (const IoError&) {

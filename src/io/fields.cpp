@@ -51,10 +51,7 @@ std::string FieldSeries::write(double time, std::size_t n_local, const double* x
   Frame frame{time, file_name, total[0], 0, {}, "Polyvertex", 1};
   try {
     h5::CollectiveWrites collective(comm_, partial);
-    Id fapl(h5::mpio_access(comm_), H5Pclose, Use::kWrite, "file access list");
-    errno = 0;
-    Id file(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), H5Fclose, Use::kWrite,
-            "create '" + partial + "'");
+    Id file(h5::create_collective(comm_, partial), H5Fclose, Use::kWrite, "create '" + partial + "'");
     h5::write_attribute(file, "time", time, partial);
     h5::write_slab(file, "x", H5T_NATIVE_DOUBLE, x, offset[0], local[0], total[0], partial);
     h5::write_slab(file, "y", H5T_NATIVE_DOUBLE, y, offset[0], local[0], total[0], partial);

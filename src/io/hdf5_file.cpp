@@ -65,14 +65,11 @@ void quiet() {
   }
 }
 
-hid_t mpio_access(MPI_Comm comm) {
-  const hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
-  if (fapl < 0) fail(Use::kWrite, "file access list");
-  if (H5Pset_fapl_mpio(fapl, comm, MPI_INFO_NULL) < 0) {
-    H5Pclose(fapl);
-    fail(Use::kWrite, "MPI-IO file access");
-  }
-  return fapl;
+hid_t create_collective(MPI_Comm comm, const std::string& path) {
+  Id fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, Use::kWrite, "file access list");
+  check(H5Pset_fapl_mpio(fapl, comm, MPI_INFO_NULL), Use::kWrite, "MPI-IO file access");
+  errno = 0;
+  return H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
 }
 
 void write_slab(hid_t where, const std::string& name, hid_t type, const void* data, long long offset,

@@ -73,7 +73,7 @@ void write_attribute(hid_t where, const std::string& name, const std::string& va
 double read_double_attribute(hid_t where, const std::string& name, const std::string& file);
 std::string read_string_attribute(hid_t where, const std::string& name, const std::string& file);
 
-// Collective file access over MPI-IO.
-hid_t mpio_access(MPI_Comm comm);
+// Creates (truncating) `path` for collective writing over MPI-IO; a negative id on failure (check it with Id).
+hid_t create_collective(MPI_Comm comm, const std::string& path);
 
 }  // namespace halfeti::io::h5
