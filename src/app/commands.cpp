@@ -40,7 +40,12 @@ int execute(const std::vector<std::string>& args, MPI_Comm comm) {
       scene::Scene s = scene::load_scene(cmd.scene, cmd.overrides, *scene_schema(), comm);
       Parts parts;
       build_parameters(s, parts);
-      if (rank == 0) std::cout << "# " << cmd.scene << ": ok\n" << s.resolved_text();
+      int ranks = 1;
+      MPI_Comm_size(comm, &ranks);
+      const SizeEstimate size = estimate_size(s, parts, ranks);
+      if (rank == 0)
+        std::cout << "# " << cmd.scene << ": ok; " << size.describe() << " on " << ranks << " rank(s)\n"
+                  << s.resolved_text();
       return 0;
     }
     case Command::Kind::kRun: {

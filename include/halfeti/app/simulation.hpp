@@ -35,6 +35,18 @@ struct RunOptions {
 // `parts` (which must outlive them). Errors name the scene file and the key.
 std::vector<ProbeColumn> build_parameters(const scene::Scene& scene, Parts& parts);
 
+// A run's size before anything is allocated: water particles (the blocks' area over dx^2), plate elements and
+// dofs, and the memory a rank needs, from figures measured on cosine_cable (README, "What a run costs").
+struct SizeEstimate {
+  double particles = 0.0;
+  long long plate_elements = 0, plate_dofs = 0;
+  double bytes_per_rank = 0.0;  // the most loaded rank's: rank 0 (its share of the water and the whole plate)
+  double machine_bytes = 0.0;   // this machine's memory (MemTotal), 0 when unknown
+  std::string describe() const;
+};
+// Raises UserError naming the key when a rank would need more memory than the machine has.
+SizeEstimate estimate_size(const scene::Scene& scene, const Parts& parts, int ranks);
+
 class Simulation {
  public:
   Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options);

@@ -74,6 +74,21 @@ TEST(Commands, ExitStatuses) {
   EXPECT_NE(file_text(kDir + "/err.txt").find("cannot open accelerogram"), std::string::npos);
 }
 
+TEST(Commands, CheckPrintsTheSizeAndRefusesARunTooBigForTheMachine) {
+  const std::string scene = std::string(HALFETI_SOURCE_DIR) + "/inputs/paper/cosine_cable.yaml";
+  ASSERT_EQ(status_of("check " + scene), 0);
+  // The blocks' area over dx^2 (13,294 laid: the plate's place is left dry) and the 2 x 60 Q9 plate.
+  EXPECT_NE(file_text(kDir + "/out.txt").find("ok; about 13333 particles, 120 plate elements (1210 dofs), "),
+            std::string::npos)
+      << file_text(kDir + "/out.txt");
+  // dx = 0.1 um: 3e12 particles, about 3e6 GB: refused before anything is allocated (it once died after 29 s).
+  EXPECT_EQ(status_of("check " + scene + " --set fluid.spacing=1e-7"), 2);
+  EXPECT_NE(file_text(kDir + "/err.txt").find("fluid.spacing: the run would need about 3000000000000 particles"),
+            std::string::npos)
+      << file_text(kDir + "/err.txt");
+  EXPECT_EQ(status_of("run " + scene + " --out " + kDir + "/huge --overwrite --set fluid.spacing=1e-7"), 2);
+}
+
 TEST(Commands, HelpAfterACommandAndSchedulesFinerThanAStepEnd) {
   EXPECT_EQ(status_of("run --help"), 0);
   EXPECT_NE(file_text(kDir + "/out.txt").find("--restart"), std::string::npos);
