@@ -62,8 +62,22 @@ int execute(const std::vector<std::string>& args, MPI_Comm comm) {
       opts.max_wall = cmd.max_wall;
       opts.command_line = "halfeti";
       for (const auto& a : args) opts.command_line += " " + a;
-      Simulation sim(comm, std::move(s), opts);
-      return sim.run();
+      int status = 0;
+      {
+        Simulation sim(comm, std::move(s), opts);
+        status = sim.run();
+      }
+      if (petsc && rank == 0) {
+        const auto unused = petsc->unused_options();
+        if (!unused.empty()) {
+          std::string names;
+          for (const auto& u : unused) names += (names.empty() ? "" : ", ") + u;
+          std::cerr << "halfeti: warning: PETSc options given after '--' that nothing used (misspelt, or for a "
+                       "solver not in use): "
+                    << names << "\n";
+        }
+      }
+      return status;
     }
   }
   return 0;

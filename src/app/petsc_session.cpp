@@ -20,4 +20,15 @@ PetscSession::PetscSession(const std::vector<std::string>& options) {
 
 PetscSession::~PetscSession() { PetscFinalize(); }
 
+std::vector<std::string> PetscSession::unused_options() const {
+  PetscInt n = 0;
+  char** names = nullptr;
+  char** values = nullptr;
+  std::vector<std::string> out;
+  if (PetscOptionsLeftGet(nullptr, &n, &names, &values) != 0) return out;
+  for (PetscInt i = 0; i < n; ++i) out.push_back(std::string("-") + names[i]);
+  PetscOptionsLeftRestore(nullptr, &n, &names, &values);
+  return out;
+}
+
 }  // namespace halfeti::app

@@ -13,6 +13,8 @@ class PetscSession {
   ~PetscSession();
   PetscSession(const PetscSession&) = delete;
   PetscSession& operator=(const PetscSession&) = delete;
+  // The options given that no PETSc object read (PETSc's own bookkeeping): misspelt or for a solver not in use.
+  std::vector<std::string> unused_options() const;
 };
 
 }  // namespace halfeti::app

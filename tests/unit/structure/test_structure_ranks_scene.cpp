@@ -92,3 +92,13 @@ TEST(StructureRanksScene, Q4EasElementGivesTheProbesOfQ9) {
             std::string::npos)
       << test::read_text(odd + ".stderr");
 }
+
+TEST(StructureRanksScene, AnUnusedPetscOptionIsNamed) {
+  // A misspelt option after `--` changes nothing: the run says which options nothing read.
+  const std::string out = test::binary_path("structure_ranks_scene_petsc");
+  ASSERT_EQ(test::run_scene(kScene, out, "--set structure.ranks=1 -- -structure_ksp_tpye gmres", 1), 0)
+      << test::read_text(out + ".stderr");
+  const std::string err = test::read_text(out + ".stderr");
+  EXPECT_NE(err.find("halfeti: warning: PETSc options given after '--' that nothing used"), std::string::npos) << err;
+  EXPECT_NE(err.find("-structure_ksp_tpye"), std::string::npos) << err;
+}
