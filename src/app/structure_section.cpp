@@ -123,11 +123,11 @@ std::shared_ptr<const Schema> cable_schema() {
     s->add(Key::point("anchor", "fixed end on a tank wall", "m").required());
     s->add(Key::string("node", "plate node it holds: top_left, top_centre, top_right, ... (hanging: bottom_left, ...)").required());
     s->add(Key::integer("count", "real cables across the tank's width").def(1).in(1, 100000));
-    s->add(Key::real("area", "cross-section of one cable", "m^2").required().positive());
+    s->add(Key::real("area", "cross-section of one cable (at most 0.01: a cable 11 cm across)", "m^2").required().positive().at_most(1e-2));
     s->add(Key::real("modulus", "Young's modulus of the cable (at most 1e12)", "Pa").required().positive().at_most(1e12));
     s->add(Key::real("density", "cable density", "kg/m^3").required().positive().at_most(1e5));
     s->add(Key::boolean("submerged", "buoyant in the water (weight uses density - water density)").def(true));
-    s->add(Key::real("unstretched_length", "unstretched length L0", "m").positive());
+    s->add(Key::real("unstretched_length", "unstretched length L0", "m").positive().at_most(1e3));
     s->add(Key::real("initial_stress", "tension stress at the plate end in the initial state", "Pa").positive());
     return std::shared_ptr<const Schema>(s);
   }();
@@ -247,10 +247,18 @@ std::vector<CableSetup> cable_setups(const scene::Node& root, const StructureSet
       cs.unstretched_length = c.real("unstretched_length");
     } else {
       cs.initial_stress = c.real("initial_stress");
+      if (cs.initial_stress >= cs.set.modulus)
+        HALFETI_USER_ERROR(c.key_path("initial_stress") << ": " << cs.initial_stress << " Pa is at or past the cable's "
+                                                        << "modulus " << cs.set.modulus << " Pa (a strain of 100 %)");
       const auto per_depth = cable::per_unit_depth(cs.set);
-      cs.unstretched_length = cable::unstretched_length_for_end_tension(
-          cs.anchor, node_position, per_depth.axial_stiffness, per_depth.weight_per_length,
-          cs.initial_stress * per_depth.area);
+      try {
+        cs.unstretched_length = cable::unstretched_length_for_end_tension(
+            cs.anchor, node_position, per_depth.axial_stiffness, per_depth.weight_per_length,
+            cs.initial_stress * per_depth.area);
+      } catch (const NumericalError& e) {  // the scene asks for what no cable gives: bad input
+        HALFETI_USER_ERROR(c.key_path("initial_stress") << ": no unstretched length gives " << cs.initial_stress
+                                                        << " Pa (" << e.what() << ")");
+      }
     }
     out.push_back(cs);
   }
