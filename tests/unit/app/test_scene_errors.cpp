@@ -77,7 +77,7 @@ const Case kCases[] = {
     {"cable without area",
      "scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0]}\n"
      "cables: [{name: a, anchor: [0, 0.01], node: top_left, area: 0, modulus: 1e6, density: 1000}]\n",
-     "bad.yaml:3:61: cables[0].area: expected a number > 0 (m^2), found '0'"},
+     "bad.yaml:3:61: cables[0].area: expected a number > 0 and <= 0.01 (m^2), found '0'"},
     {"layer outside eq. 23's range", "scene: {name: s, end_time: 1}\ncoupling: {ssosd: {layer_ratio: 60}}\n",
      "bad.yaml:2:33: coupling.ssosd.layer_ratio: expected a number in [5, 50], found '60'"},
     {"interface added mass out of range", "scene: {name: s, end_time: 1}\ncoupling: {added_mass_layer: 5}\n",
