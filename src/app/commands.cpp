@@ -7,6 +7,7 @@
 #include "halfeti/app/cli.hpp"
 #include "halfeti/app/scene_schema.hpp"
 #include "halfeti/app/petsc_session.hpp"
+#include "halfeti/app/run_size.hpp"
 #include "halfeti/app/simulation.hpp"
 #include "halfeti/cable/cable_tool.hpp"
 #include "halfeti/core/error.hpp"

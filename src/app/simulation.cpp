@@ -4,7 +4,6 @@
 #include <unistd.h>
 
 #include <cctype>
-#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -15,6 +14,7 @@
 #include "halfeti/app/coupling_section.hpp"
 #include "halfeti/app/fluid_section.hpp"
 #include "halfeti/app/restart.hpp"
+#include "halfeti/app/run_size.hpp"
 #include "halfeti/core/collective.hpp"
 #include "halfeti/core/error.hpp"
 #include "halfeti/core/version.hpp"
@@ -31,9 +31,6 @@ std::string directory_of(const std::string& file) {
   return p == std::string::npos ? std::string(".") : file.substr(0, p);
 }
 
-double wall_now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
 // The largest |a_g| over the run, sampled finely enough for records (0.02 s) and pulses.
 double peak_ground_acceleration(const excitation::GroundMotion& m, double end) {
@@ -105,57 +102,6 @@ std::vector<ProbeColumn> build_parameters(const scene::Scene& scene, Parts& part
     if (what.rfind(scene.file, 0) == 0) throw;
     throw UserError(scene.file + ": " + what);
   }
-}
-
-namespace {
-// Measured on cosine_cable, 1 rank (peak resident memory at dx 3, 1.5, 0.75 mm: 52.6, 63.6, 104.2 MB for 3,246,
-// 13,294, 52,772 particles): about 50 MB of libraries and 1.03 kB per particle; a 64 x 4096 Q9 plate took 2.6 GB,
-// about 10 kB per element.
-constexpr double kBaseBytes = 50e6, kBytesPerParticle = 1.1e3, kBytesPerElement = 10e3;
-
-double machine_memory() {
-  std::ifstream in("/proc/meminfo");
-  std::string key;
-  double kb = 0.0;
-  while (in >> key >> kb) {
-    if (key == "MemTotal:") return kb * 1024.0;
-    in.ignore(1 << 10, '\n');
-  }
-  return 0.0;
-}
-}  // namespace
-
-std::string SizeEstimate::describe() const {
-  std::ostringstream os;
-  os << "about " << static_cast<long long>(particles) << " particles, " << plate_elements << " plate elements ("
-     << plate_dofs << " dofs), " << format("%.3g", bytes_per_rank / 1e9) << " GB on the busiest rank";
-  if (machine_bytes > 0) os << " (this machine has " << format("%.3g", machine_bytes / 1e9) << " GB)";
-  return os.str();
-}
-
-SizeEstimate estimate_size(const scene::Scene& scene, const Parts& parts, int ranks) {
-  SizeEstimate e;
-  if (parts.fluid_params) {
-    const auto& f = *parts.fluid_params;
-    for (const auto& b : f.water)
-      e.particles += (b.x1 - b.x0) * (b.y1 + std::abs(b.surface_amplitude) - b.y0) / (f.spacing * f.spacing);
-  }
-  if (parts.structure_setup) {
-    const auto& g = parts.structure_setup->params.geometry;
-    e.plate_elements = static_cast<long long>(g.cells_across) * g.cells_along;
-    const long long per_side = g.element == structure::ElementType::kQ9 ? 2 : 1;
-    e.plate_dofs = 2 * (per_side * g.cells_across + 1) * (per_side * g.cells_along + 1);
-  }
-  e.bytes_per_rank = kBaseBytes + kBytesPerParticle * e.particles / std::max(1, ranks) +
-                     kBytesPerElement * static_cast<double>(e.plate_elements);
-  e.machine_bytes = machine_memory();
-  if (e.machine_bytes > 0 && e.bytes_per_rank > e.machine_bytes)
-    HALFETI_USER_ERROR(scene.file << ": " << (parts.fluid_params && kBytesPerParticle * e.particles > kBytesPerElement * e.plate_elements
-                                                  ? "fluid.spacing"
-                                                  : "structure.cells_along")
-                                  << ": the run would need " << e.describe() << " on " << ranks
-                                  << " rank(s); coarsen it or run on more ranks");
-  return e;
 }
 
 namespace {
@@ -360,71 +306,6 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
   });
 }
 
-// The parts' state from a checkpoint (the parts are built; each part checks that the state fits it).
-void Simulation::restore(const io::Checkpoint& c) {
-  const auto block = [&](const char* name) -> const std::vector<double>& {
-    const auto it = c.blocks.find(name);
-    if (it == c.blocks.end())
-      HALFETI_USER_ERROR("restart: '" << restart_path_ << "' holds no " << name << " state");
-    return it->second;
-  };
-  const auto text = [&](const char* name) {
-    const auto it = c.texts.find(name);
-    return it == c.texts.end() ? std::string() : it->second;
-  };
-  if (text("written") != "between steps")
-    HALFETI_USER_ERROR("restart: '" << restart_path_ << "' was written " << text("written")
-                                    << " (for inspection); continue from an earlier checkpoint");
-  const auto& run = block("run");
-  if (run.size() != 5) HALFETI_USER_ERROR("restart: the run state of '" << restart_path_ << "' is malformed");
-  t_ = run[0];
-  steps_ = static_cast<long long>(run[1]);
-  initial_mass_ = run[2];
-  max_density_variation_ = run[3];
-  earlier_wall_ = run[4];
-  steps_at_start_ = steps_;
-  if (parts_.fluid) {
-    const auto& f = block("fluid");
-    if (f.size() != 4) HALFETI_USER_ERROR("restart: the fluid state of '" << restart_path_ << "' is malformed");
-    // The sound speed may be sized from the peak ground acceleration up to end_time (eq. 10): a longer run must
-    // not change it.
-    if (f[3] != parts_.fluid->sound_speed())
-      HALFETI_USER_ERROR("restart: the sound speed is " << parts_.fluid->sound_speed() << " m/s, the checkpoint's "
-                                                        << f[3] << " m/s (sized from the excitation up to end_time: "
-                                                                   "set fluid.sound_speed to continue)");
-    sph::Fluid::State st;
-    st.gid = c.particles.gid;
-    st.x = c.particles.x;
-    st.y = c.particles.y;
-    st.vx = c.particles.vx;
-    st.vy = c.particles.vy;
-    st.rho = c.particles.rho;
-    st.mass = c.particles.mass;
-    st.time = f[0];
-    st.step = static_cast<long>(f[1]);
-    st.spilled_mass = f[2];
-    st.events = decode_health_log(text("health_log"));
-    st.active_warnings = decode_lines(text("active_warnings"));
-    parts_.fluid->restore(st);
-  }
-  if (parts_.structure_setup) {
-    on_structure_rank(comm_, parts_.structure_rank, [&] {
-      parts_.plate->restore_state(block("plate"));
-      const auto& cables = block("cables");
-      std::size_t used = 0;
-      for (auto& cable : parts_.cables) used += cable->restore_state(cables.data() + used, cables.size() - used);
-      if (used != cables.size())
-        HALFETI_USER_ERROR("restart: '" << restart_path_ << "' holds the state of more cables than the scene has");
-    });
-  }
-  if (parts_.coupling) {
-    parts_.coupling->restore_state(block("coupling"));
-    if (parts_.coupling->parameters().plate_wall)
-      parts_.fluid->set_plate_outline(parts_.coupling->plate_outline());
-    else
-      parts_.fluid->set_barriers(parts_.coupling->outline());
-  }
-}
 
 Simulation::~Simulation() = default;
 
@@ -586,51 +467,6 @@ void Simulation::write_fields(double t) {
                         {"p", p.data()}, {"gid", gid.data()}});
 }
 
-void Simulation::write_checkpoint(const std::string& label) {
-  ScopedTimer timer(timers_, "checkpoint");
-  const double started = wall_now();
-  io::Checkpoint c;
-  c.time = t_;
-  c.steps = steps_;
-  c.ranks = size_;
-  c.blocks["run"] = {t_, static_cast<double>(steps_), initial_mass_, max_density_variation_,
-                     earlier_wall_ + (run_start_ > 0.0 ? started - run_start_ : 0.0)};
-  c.texts["scene"] = scene_.resolved_text();
-  // A failure inside a step leaves a state for inspection, not one a step can start from.
-  const bool restartable = label != "at the failure";
-  c.texts["written"] = restartable ? "between steps" : "at a failure inside a step";
-  if (parts_.fluid) {
-    sph::Fluid::State st = parts_.fluid->state();
-    c.particles = {std::move(st.gid), std::move(st.x),  std::move(st.y),   std::move(st.vx),
-                   std::move(st.vy),  std::move(st.rho), std::move(st.mass)};
-    c.blocks["fluid"] = {st.time, static_cast<double>(st.step), st.spilled_mass, parts_.fluid->sound_speed()};
-    c.texts["health_log"] = encode_health_log(st.events);
-    c.texts["active_warnings"] = encode_lines(st.active_warnings);
-  }
-  if (parts_.structure_setup) {
-    std::vector<double> plate, cables;
-    if (parts_.structure_rank) {  // collective over the structure's ranks; rank 0 (one of them) writes
-      plate = parts_.plate->save_state();
-      for (const auto& cable : parts_.cables) cable->save_state(cables);
-    }
-    c.blocks["plate"] = std::move(plate);
-    c.blocks["cables"] = std::move(cables);
-  }
-  if (parts_.coupling) c.blocks["coupling"] = parts_.coupling->save_state();
-  const std::string dir = out_dir_ + "/checkpoints", path = dir + "/" + io::checkpoint_file_name(steps_);
-  io::write_checkpoint(comm_, path, c);
-  // The newest output.checkpoint_keep checkpoints stay (0: all).
-  const int keep = static_cast<int>(scene_.root().section("output").integer("checkpoint_keep"));
-  collective_outcome(comm_, 0, rank_ == 0, [&] {
-    const auto all = io::list_checkpoints(dir);
-    for (std::size_t k = 0; keep > 0 && k + static_cast<std::size_t>(keep) < all.size(); ++k)
-      if (std::remove(all[k].c_str()) != 0)
-        HALFETI_IO_ERROR("cannot remove the old checkpoint '" << all[k] << "': " << std::strerror(errno));
-  });
-  last_checkpoint_wall_ = wall_now() - started;
-  last_checkpoint_step_ = steps_;
-  log_->line("checkpoint (" + label + "): " + path);
-}
 
 std::string Simulation::progress_line(double dt, double wall) const {
   const double end = scene_.root().section("scene").real("end_time");
@@ -669,15 +505,58 @@ void Simulation::check_outputs() {
   });
 }
 
-int Simulation::run() {
-  const scene::Node root = scene_.root();
-  const double end = root.section("scene").real("end_time");
-  const scene::Node out = root.section("output");
+// The steps from t_ to `end` with the outputs on their schedules; returns why the run stopped before the end (a
+// signal, the wall-time limit), "" when it got there.
+std::string Simulation::run_steps(double end, double start) {
+  const scene::Node out = scene_.root().section("output");
   const double probe_dt = out.real("probe_interval");
   const double field_dt = out.real("field_interval");
   const double checkpoint_dt = out.real("checkpoint_interval");
   const double progress_dt = out.real("progress_interval") > 0 ? out.real("progress_interval") : end / 50.0;
-  const double start = wall_now();
+  // A step ends within round-off of a scheduled time counts as reaching it. The schedules are the sequences
+  // dt, dt + dt, ... (each the sum of the one before and dt), resumed after t on a restart.
+  const double tol = 1e-9 * end;
+  const auto first_after = [&](double interval) { return next_in_schedule(interval, interval, t_, tol); };
+  double next_probe = first_after(probe_dt), next_field = first_after(field_dt),
+         next_checkpoint = first_after(checkpoint_dt), next_progress = first_after(progress_dt);
+  if (restart_path_.empty()) {
+    prepare_structure();
+    sample(t_);
+    if (field_dt > 0) write_fields(t_);
+  }
+  double dt = 0.0, step_wall = 0.0;
+  while (t_ < end - tol) {
+    const double step_start = wall_seconds();
+    dt = advance(end - t_);
+    t_ = parts_.fluid ? parts_.fluid->time() : t_ + dt;
+    ++steps_;
+    if (t_ >= next_probe - tol) {
+      sample(t_);
+      next_probe = next_in_schedule(next_probe, probe_dt, t_, tol);
+    }
+    if (field_dt > 0 && t_ >= next_field - tol) {
+      write_fields(t_);
+      next_field = next_in_schedule(next_field, field_dt, t_, tol);
+    }
+    if (checkpoint_dt > 0 && t_ >= next_checkpoint - tol) {
+      write_checkpoint("scheduled");
+      next_checkpoint = next_in_schedule(next_checkpoint, checkpoint_dt, t_, tol);
+    }
+    if (t_ >= next_progress - tol) {
+      log_->line(progress_line(dt, wall_seconds() - start));
+      next_progress = next_in_schedule(next_progress, progress_dt, t_, tol);
+    }
+    step_wall = std::max(step_wall, wall_seconds() - step_start);
+    if (t_ < end - tol)  // the same on every rank: the check is collective
+      if (std::string why = stop_reason(wall_seconds() - start, step_wall); !why.empty()) return why;
+  }
+  last_dt_ = dt;
+  return "";
+}
+
+int Simulation::run() {
+  const double end = scene_.root().section("scene").real("end_time");
+  const double start = wall_seconds();
   run_start_ = start;
   started_utc_ = utc_now();
   announce();
@@ -690,85 +569,42 @@ int Simulation::run() {
   g_stop_signal = 0;
   for (int sig : {SIGTERM, SIGINT, SIGUSR1}) std::signal(sig, request_stop);
 
-  // A step ends within round-off of a scheduled time counts as reaching it. The schedules are the sequences
-  // dt, dt + dt, ... (each the sum of the one before and dt), resumed after t on a restart.
-  const double tol = 1e-9 * end;
-  const auto first_after = [&](double interval) { return next_in_schedule(interval, interval, t_, tol); };
-  double next_probe = first_after(probe_dt), next_field = first_after(field_dt),
-         next_checkpoint = first_after(checkpoint_dt), next_progress = first_after(progress_dt);
-  const double loop_start = wall_now();
-  double dt = 0.0;
+  const double loop_start = wall_seconds();
   std::string stopped;
   try {
+    stopped = run_steps(end, start);
+  } catch (const NumericalError& e) {
+    // Errors are raised on every rank together (the monitors reduce first), so the checkpoint is collective.
+    log_->line(std::string("stopped: ") + e.what());
     try {
-      if (restart_path_.empty()) {
-        prepare_structure();
-        sample(t_);
-        if (field_dt > 0) write_fields(t_);
-      }
-      double step_wall = 0.0;
-      while (t_ < end - tol) {
-        const double step_start = wall_now();
-        dt = advance(end - t_);
-        t_ = parts_.fluid ? parts_.fluid->time() : t_ + dt;
-        ++steps_;
-        if (t_ >= next_probe - tol) {
-          sample(t_);
-          next_probe = next_in_schedule(next_probe, probe_dt, t_, tol);
-        }
-        if (field_dt > 0 && t_ >= next_field - tol) {
-          write_fields(t_);
-          next_field = next_in_schedule(next_field, field_dt, t_, tol);
-        }
-        if (checkpoint_dt > 0 && t_ >= next_checkpoint - tol) {
-          write_checkpoint("scheduled");
-          next_checkpoint = next_in_schedule(next_checkpoint, checkpoint_dt, t_, tol);
-        }
-        if (t_ >= next_progress - tol) {
-          log_->line(progress_line(dt, wall_now() - start));
-          next_progress = next_in_schedule(next_progress, progress_dt, t_, tol);
-        }
-        step_wall = std::max(step_wall, wall_now() - step_start);
-        stopped = stop_reason(wall_now() - start, step_wall);
-        if (!stopped.empty() && t_ < end - tol) break;
-        stopped.clear();
-      }
-    } catch (const NumericalError& e) {
-      // Errors are raised on every rank together (the monitors reduce first), so the checkpoint is collective.
-      log_->line(std::string("stopped: ") + e.what());
-      try {
-        write_checkpoint("at the failure");
-      } catch (const IoError& io) {
-        log_->line(std::string("no checkpoint at the failure: ") + io.what());
-      }
-      write_summary("numerical_failure", wall_now() - start, wall_now() - loop_start);
-      throw;
+      write_checkpoint("at the failure", false);
+    } catch (const IoError& io) {
+      log_->line(std::string("no checkpoint at the failure: ") + io.what());
     }
+    write_summary("numerical_failure", wall_seconds() - start, wall_seconds() - loop_start);
+    throw;
   } catch (const IoError& e) {
     // An output that cannot be written (a full disk): said once, and in summary.json if that can still be written.
     try {
       log_->line(std::string("stopped: ") + e.what());
-    } catch (const IoError&) {
-    }
-    try {
-      write_summary("io_failure", wall_now() - start, wall_now() - loop_start);
+      write_summary("io_failure", wall_seconds() - start, wall_seconds() - loop_start);
     } catch (const IoError&) {
     }
     throw;
   }
   check_outputs();
-  const double loop_wall = wall_now() - loop_start;
+  const double loop_wall = wall_seconds() - loop_start;
   if (!stopped.empty()) {
     write_checkpoint("at the stop");
     log_->line("stopped: " + stopped + " at t = " + format("%.9g", t_) + " s, step " + std::to_string(steps_) +
                "; continue with: halfeti run " + scene_.file + " --restart " + out_dir_ + " --out " + out_dir_);
-    write_summary("stopped", wall_now() - start, loop_wall);
+    write_summary("stopped", wall_seconds() - start, loop_wall);
     return kExitStoppedResumable;
   }
   if (last_checkpoint_step_ != steps_) write_checkpoint("final");  // unless the schedule just wrote this step's
-  log_->line(progress_line(dt, wall_now() - start));
-  write_summary("ok", wall_now() - start, loop_wall);
-  log_->line("done: " + std::to_string(steps_) + " steps, " + format("%.2f", wall_now() - start) + " s wall");
+  log_->line(progress_line(last_dt_, wall_seconds() - start));
+  write_summary("ok", wall_seconds() - start, loop_wall);
+  log_->line("done: " + std::to_string(steps_) + " steps, " + format("%.2f", wall_seconds() - start) + " s wall");
   check_outputs();
   return 0;
 }
@@ -798,54 +634,54 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
   }
   const long long dofs = parts_.plate ? parts_.plate->dof_count() : 0;  // written by rank 0, a structure rank
   collective_outcome(comm_, 0, rank_ == 0, [&] {  // rank 0 writes; a failed write stops every rank
-  const scene::Node root = scene_.root();
-  io::Json j = io::Json::object();
-  j.set("halfeti", kVersion);
-  j.set("exit_status", status);
-  j.set("scene", root.section("scene").string("name"));
-  j.set("scene_file", scene_.file);
-  if (root.section("scene").has("description")) j.set("description", root.section("scene").string("description"));
-  // Provenance: what ran, where, when and from what.
-  io::Json prov = io::Json::object();
-  prov.set("version", kVersion).set("commit", kGitCommit).set("command_line", options_.command_line);
-  char host[256] = "";
-  gethostname(host, sizeof host - 1);
-  prov.set("host", host).set("started", started_utc_);
-  const char* job = std::getenv("SLURM_JOB_ID");
-  prov.set("slurm_job_id", job ? io::Json(std::string(job)) : io::Json());
-  prov.set("restarted_from", restart_path_.empty() ? io::Json() : io::Json(restart_path_));
-  j.set("provenance", prov);
-  j.set("ranks", size_);
-  j.set("particles", particles);  // now (water over the open top leaves the run)
-  j.set("initial_particles", initial_particles_);
-  j.set("structure_dofs", dofs);
-  j.set("cables", static_cast<int>(parts_.cable_setups.size()));
-  j.set("steps", steps_);
-  j.set("simulated_time", t_);
-  j.set("wall_time", wall);  // this run's (a restarted run's: since its restart)
-  j.set("loop_wall_time", loop_wall);
-  j.set("earlier_wall_time", earlier_wall_);  // of the runs it continues
-  const long long steps_here = steps_ - steps_at_start_;
-  j.set("ns_per_particle_step", particles > 0 && steps_here > 0
-                                    ? io::Json(1e9 * loop_wall / (static_cast<double>(particles) * steps_here))
-                                    : io::Json());
-  io::Json tj = io::Json::object();
-  for (const auto& [phase, seconds] : timers.all()) tj.set(phase, seconds);
-  j.set("timers", tj);
-  j.set("max_density_variation", parts_.fluid ? io::Json(max_density_variation_) : io::Json());
-  // Water thrown over the tank's open top leaves the run (a "spilled" health event); the error counts it in.
-  const double spilled = parts_.fluid ? parts_.fluid->spilled_mass() : 0.0;
-  j.set("mass_error",
-        parts_.fluid && initial_mass_ > 0 ? io::Json((mass + spilled - initial_mass_) / initial_mass_) : io::Json());
-  j.set("spilled_mass", parts_.fluid ? io::Json(spilled) : io::Json());
-  io::Json events = io::Json::array();
-  for (const auto& e : health_events()) {
-    io::Json ev = io::Json::object();
-    ev.set("time", e.time).set("step", e.step).set("kind", e.kind).set("fatal", e.fatal).set("message", e.message);
-    events.push(ev);
-  }
-  j.set("health_events", events);
-  io::write_file_atomically(out_dir_ + "/summary.json", j.dump() + "\n");
+    const scene::Node root = scene_.root();
+    io::Json j = io::Json::object();
+    j.set("halfeti", kVersion);
+    j.set("exit_status", status);
+    j.set("scene", root.section("scene").string("name"));
+    j.set("scene_file", scene_.file);
+    if (root.section("scene").has("description")) j.set("description", root.section("scene").string("description"));
+    // Provenance: what ran, where, when and from what.
+    io::Json prov = io::Json::object();
+    prov.set("version", kVersion).set("commit", kGitCommit).set("command_line", options_.command_line);
+    char host[256] = "";
+    gethostname(host, sizeof host - 1);
+    prov.set("host", host).set("started", started_utc_);
+    const char* job = std::getenv("SLURM_JOB_ID");
+    prov.set("slurm_job_id", job ? io::Json(std::string(job)) : io::Json());
+    prov.set("restarted_from", restart_path_.empty() ? io::Json() : io::Json(restart_path_));
+    j.set("provenance", prov);
+    j.set("ranks", size_);
+    j.set("particles", particles);  // now (water over the open top leaves the run)
+    j.set("initial_particles", initial_particles_);
+    j.set("structure_dofs", dofs);
+    j.set("cables", static_cast<int>(parts_.cable_setups.size()));
+    j.set("steps", steps_);
+    j.set("simulated_time", t_);
+    j.set("wall_time", wall);  // this run's (a restarted run's: since its restart)
+    j.set("loop_wall_time", loop_wall);
+    j.set("earlier_wall_time", earlier_wall_);  // of the runs it continues
+    const long long steps_here = steps_ - steps_at_start_;
+    j.set("ns_per_particle_step", particles > 0 && steps_here > 0
+                                      ? io::Json(1e9 * loop_wall / (static_cast<double>(particles) * steps_here))
+                                      : io::Json());
+    io::Json tj = io::Json::object();
+    for (const auto& [phase, seconds] : timers.all()) tj.set(phase, seconds);
+    j.set("timers", tj);
+    j.set("max_density_variation", parts_.fluid ? io::Json(max_density_variation_) : io::Json());
+    // Water thrown over the tank's open top leaves the run (a "spilled" health event); the error counts it in.
+    const double spilled = parts_.fluid ? parts_.fluid->spilled_mass() : 0.0;
+    j.set("mass_error",
+          parts_.fluid && initial_mass_ > 0 ? io::Json((mass + spilled - initial_mass_) / initial_mass_) : io::Json());
+    j.set("spilled_mass", parts_.fluid ? io::Json(spilled) : io::Json());
+    io::Json events = io::Json::array();
+    for (const auto& e : health_events()) {
+      io::Json ev = io::Json::object();
+      ev.set("time", e.time).set("step", e.step).set("kind", e.kind).set("fatal", e.fatal).set("message", e.message);
+      events.push(ev);
+    }
+    j.set("health_events", events);
+    io::write_file_atomically(out_dir_ + "/summary.json", j.dump() + "\n");
   });
 }
 

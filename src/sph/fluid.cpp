@@ -96,8 +96,7 @@ bool Fluid::excluded(double px, double py) const {
 
 void Fluid::initialise_particles() {
   // Every rank lays out the same lattice with the same global ids, then keeps the particles of its cells.
-  std::vector<std::int64_t> gid;
-  std::vector<double> x, y, rho;
+  ParticleArrays all;
   std::int64_t next = 0;
   const double g = params_.gravity, rho0 = params_.density;
   for (const auto& b : params_.water) {
@@ -108,28 +107,40 @@ void Fluid::initialise_particles() {
         const double px = b.x0 + (i + 0.5) * dx_, py = b.y0 + (j + 0.5) * dx_;
         const double surface = b.y1 + b.surface_amplitude * std::cos(M_PI * px / params_.tank_length);
         if (py >= surface || near_internal_wall(px, py) || excluded(px, py)) continue;
-        gid.push_back(next++);
-        x.push_back(px);
-        y.push_back(py);
-        // Hydrostatic initial state: p = rho0 g (surface - y), density from eq. 9.
-        rho.push_back(density_from_pressure(rho0 * g * (surface - py), rho0, c0_));
+        // Hydrostatic initial state: p = rho0 g (surface - y), density from eq. 9; each particle stands for a dx^2
+        // cell of water at its density.
+        const double rho = density_from_pressure(rho0 * g * (surface - py), rho0, c0_);
+        all.gid.push_back(next++);
+        all.x.push_back(px);
+        all.y.push_back(py);
+        all.vx.push_back(0.0);
+        all.vy.push_back(0.0);
+        all.rho.push_back(rho);
+        all.mass.push_back(rho * dx_ * dx_);
       }
   }
-  n_global_ = next;
+  distribute(std::move(all));
+}
+
+void Fluid::distribute(ParticleArrays all) {
+  const std::size_t n = all.gid.size();
   std::vector<long> counts(grid_.cell_count(), 0);
-  for (std::size_t k = 0; k < x.size(); ++k) ++counts[grid_.cell_of(x[k], y[k])];
+  for (std::size_t k = 0; k < n; ++k) ++counts[grid_.cell_of(all.x[k], all.y[k])];
   owner_ = parallel::partition_cells_collective(comm_.get(), grid_, counts, params_.first_rank_share);
-  for (std::size_t k = 0; k < x.size(); ++k) {
-    if (owner_[grid_.cell_of(x[k], y[k])] != rank_) continue;
-    gid_.push_back(gid[k]);
-    x_.push_back(x[k]);
-    y_.push_back(y[k]);
-    vx_.push_back(0.0);
-    vy_.push_back(0.0);
-    rho_.push_back(rho[k]);
-    mass_.push_back(rho[k] * dx_ * dx_);  // each particle stands for a dx^2 cell of water at its density
+  gid_.clear();
+  for (auto* v : {&x_, &y_, &vx_, &vy_, &rho_, &mass_}) v->clear();
+  for (std::size_t k = 0; k < n; ++k) {
+    if (owner_[grid_.cell_of(all.x[k], all.y[k])] != rank_) continue;
+    gid_.push_back(all.gid[k]);
+    x_.push_back(all.x[k]);
+    y_.push_back(all.y[k]);
+    vx_.push_back(all.vx[k]);
+    vy_.push_back(all.vy[k]);
+    rho_.push_back(all.rho[k]);
+    mass_.push_back(all.mass[k]);
   }
   n_owned_ = n_local_ = static_cast<int>(gid_.size());
+  n_global_ = static_cast<long>(n);
   sort_owned_by_cell();
 }
 
@@ -390,13 +401,7 @@ void Fluid::migrate() {
 Fluid::State Fluid::state() const {
   State s;
   const auto owned = [&](const auto& v) { return std::vector(v.begin(), v.begin() + n_owned_); };
-  s.gid = owned(gid_);
-  s.x = owned(x_);
-  s.y = owned(y_);
-  s.vx = owned(vx_);
-  s.vy = owned(vy_);
-  s.rho = owned(rho_);
-  s.mass = owned(mass_);
+  s.particles = {owned(gid_), owned(x_), owned(y_), owned(vx_), owned(vy_), owned(rho_), owned(mass_)};
   s.time = time_;
   s.spilled_mass = spilled_mass_;
   s.step = step_;
@@ -405,40 +410,22 @@ Fluid::State Fluid::state() const {
   return s;
 }
 
-void Fluid::restore(const State& all) {
-  const std::size_t n = all.gid.size();
-  HALFETI_CHECK(all.x.size() == n && all.y.size() == n && all.vx.size() == n && all.vy.size() == n &&
-                    all.rho.size() == n && all.mass.size() == n,
+void Fluid::restore(State all) {
+  const ParticleArrays& p = all.particles;
+  const std::size_t n = p.gid.size();
+  HALFETI_CHECK(p.x.size() == n && p.y.size() == n && p.vx.size() == n && p.vy.size() == n && p.rho.size() == n &&
+                    p.mass.size() == n,
                 "Fluid::restore: particle arrays of unequal length");
-  // As at the start: every rank sees every particle, the cells are partitioned by their counts, each rank keeps
-  // its cells' particles (in (cell, gid) order, as after every step).
-  std::vector<long> counts(grid_.cell_count(), 0);
-  for (std::size_t k = 0; k < n; ++k) {
-    if (!std::isfinite(all.x[k]) || !std::isfinite(all.y[k]))
-      HALFETI_USER_ERROR("restart: particle " << all.gid[k] << " has a position that is not finite");
-    ++counts[grid_.cell_of(all.x[k], all.y[k])];
-  }
-  owner_ = parallel::partition_cells_collective(comm_.get(), grid_, counts, params_.first_rank_share);
-  gid_.clear();
-  for (auto* v : {&x_, &y_, &vx_, &vy_, &rho_, &mass_}) v->clear();
-  for (std::size_t k = 0; k < n; ++k) {
-    if (owner_[grid_.cell_of(all.x[k], all.y[k])] != rank_) continue;
-    gid_.push_back(all.gid[k]);
-    x_.push_back(all.x[k]);
-    y_.push_back(all.y[k]);
-    vx_.push_back(all.vx[k]);
-    vy_.push_back(all.vy[k]);
-    rho_.push_back(all.rho[k]);
-    mass_.push_back(all.mass[k]);
-  }
-  n_owned_ = n_local_ = static_cast<int>(gid_.size());
-  n_global_ = static_cast<long>(n);
-  sort_owned_by_cell();
+  for (std::size_t k = 0; k < n; ++k)
+    if (!std::isfinite(p.x[k]) || !std::isfinite(p.y[k]))
+      HALFETI_USER_ERROR("restart: particle " << p.gid[k] << " has a position that is not finite");
+  // As at the start: the cells partitioned afresh over this run's ranks (results do not depend on it).
+  distribute(std::move(all.particles));
   time_ = all.time;
   step_ = all.step;
   spilled_mass_ = all.spilled_mass;
-  events_ = all.events;
-  active_warnings_ = all.active_warnings;
+  events_ = std::move(all.events);
+  active_warnings_ = std::move(all.active_warnings);
   forces_ready_ = predicted_ = false;
 }
 

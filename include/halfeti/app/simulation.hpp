@@ -35,18 +35,6 @@ struct RunOptions {
 // `parts` (which must outlive them). Errors name the scene file and the key.
 std::vector<ProbeColumn> build_parameters(const scene::Scene& scene, Parts& parts);
 
-// A run's size before anything is allocated: water particles (the blocks' area over dx^2), plate elements and
-// dofs, and the memory a rank needs, from figures measured on cosine_cable (README, "What a run costs").
-struct SizeEstimate {
-  double particles = 0.0;
-  long long plate_elements = 0, plate_dofs = 0;
-  double bytes_per_rank = 0.0;  // the most loaded rank's: rank 0 (its share of the water and the whole plate)
-  double machine_bytes = 0.0;   // this machine's memory (MemTotal), 0 when unknown
-  std::string describe() const;
-};
-// Raises UserError naming the key when a rank would need more memory than the machine has.
-SizeEstimate estimate_size(const scene::Scene& scene, const Parts& parts, int ranks);
-
 class Simulation {
  public:
   Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options);
@@ -70,8 +58,10 @@ class Simulation {
   void load_cables(double t);
   void write_fields(double t);
   void write_plate_fields(double t);
-  void write_checkpoint(const std::string& label);
-  void restore(const io::Checkpoint& checkpoint);
+  // between_steps: false for the checkpoint at a failure inside a step (for inspection; a restart refuses it).
+  void write_checkpoint(const std::string& label, bool between_steps = true);
+  void restore(io::Checkpoint checkpoint);
+  std::string run_steps(double end, double start);  // the step loop; returns why it stopped early ("" at the end)
   std::string stop_reason(double wall, double step_wall);
   std::string output_failure() const;
   void check_outputs();
@@ -96,7 +86,7 @@ class Simulation {
   std::string restart_path_;  // the checkpoint continued from ("" for a fresh run)
   bool continuing_ = false;   // the restart writes into the folder of the run it continues
   std::string started_utc_;
-  double run_start_ = 0.0, earlier_wall_ = 0.0, last_checkpoint_wall_ = 0.0;
+  double run_start_ = 0.0, earlier_wall_ = 0.0, last_checkpoint_wall_ = 0.0, last_dt_ = 0.0;
 };
 
 }  // namespace halfeti::app

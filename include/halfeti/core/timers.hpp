@@ -8,6 +8,11 @@
 
 namespace halfeti {
 
+// Seconds on a steady clock (differences only).
+inline double wall_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
 class PhaseTimers {
  public:
   void add(const std::string& phase, double seconds) { seconds_[phase] += seconds; }

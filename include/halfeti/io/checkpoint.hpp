@@ -12,12 +12,11 @@
 #include <string>
 #include <vector>
 
+#include "halfeti/core/particle_arrays.hpp"
+
 namespace halfeti::io {
 
-struct ParticleArrays {
-  std::vector<std::int64_t> gid;
-  std::vector<double> x, y, vx, vy, rho, mass;
-};
+using halfeti::ParticleArrays;
 
 struct Checkpoint {
   double time = 0.0;

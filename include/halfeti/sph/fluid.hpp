@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "halfeti/core/communicator.hpp"
+#include "halfeti/core/particle_arrays.hpp"
 #include "halfeti/core/timers.hpp"
 #include "halfeti/excitation/ground_motion.hpp"
 #include "halfeti/parallel/cell_grid.hpp"
@@ -102,8 +103,7 @@ class Fluid {
   // reads (neighbours, halo, rates, dt) is rebuilt from these, so a restored fluid steps bit for bit as the one
   // saved, on any number of ranks.
   struct State {
-    std::vector<std::int64_t> gid;
-    std::vector<double> x, y, vx, vy, rho, mass;
+    ParticleArrays particles;
     double time = 0.0, spilled_mass = 0.0;
     long step = 0;
     std::vector<HealthEvent> events;
@@ -111,12 +111,14 @@ class Fluid {
   };
   State state() const;  // (taken inside a step, at a failure, it is for inspection: between_steps() is false)
   bool between_steps() const { return !forces_ready_ && !predicted_; }
-  void restore(const State& all);  // collective; the particles partitioned afresh over this run's ranks
+  void restore(State all);  // collective; the particles partitioned afresh over this run's ranks
   // Cell -> owning rank map of the current decomposition (diagnostics of the balance).
   const std::vector<int>& cell_owner() const { return owner_; }
 
  private:
   void initialise_particles();
+  // Partitions the cells by their counts of `all` and keeps this rank's particles, in (cell, gid) order.
+  void distribute(ParticleArrays all);
   bool excluded(double px, double py) const;
   bool near_internal_wall(double x, double y) const;
   void sort_owned_by_cell();

@@ -1,0 +1,65 @@
+#include "halfeti/app/run_size.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+#include "halfeti/core/error.hpp"
+
+namespace halfeti::app {
+
+namespace {
+// Measured on cosine_cable, 1 rank (peak resident memory at dx 3, 1.5, 0.75 mm: 52.6, 63.6, 104.2 MB for 3,246,
+// 13,294, 52,772 particles): about 50 MB of libraries and 1.03 kB per particle; a 64 x 4096 Q9 plate took 2.6 GB,
+// about 10 kB per element.
+constexpr double kBaseBytes = 50e6, kBytesPerParticle = 1.1e3, kBytesPerElement = 10e3;
+
+double machine_memory() {
+  std::ifstream in("/proc/meminfo");
+  std::string key;
+  double kb = 0.0;
+  while (in >> key >> kb) {
+    if (key == "MemTotal:") return kb * 1024.0;
+    in.ignore(1 << 10, '\n');
+  }
+  return 0.0;
+}
+}  // namespace
+
+std::string SizeEstimate::describe() const {
+  std::ostringstream os;
+  os << "about " << static_cast<long long>(particles) << " particles, " << plate_elements << " plate elements ("
+     << plate_dofs << " dofs), " << std::setprecision(3) << bytes_per_rank / 1e9 << " GB on the busiest rank";
+  if (machine_bytes > 0) os << " (this machine has " << machine_bytes / 1e9 << " GB)";
+  return os.str();
+}
+
+SizeEstimate estimate_size(const scene::Scene& scene, const Parts& parts, int ranks) {
+  SizeEstimate e;
+  if (parts.fluid_params) {
+    const auto& f = *parts.fluid_params;
+    for (const auto& b : f.water)
+      e.particles += (b.x1 - b.x0) * (b.y1 + std::abs(b.surface_amplitude) - b.y0) / (f.spacing * f.spacing);
+  }
+  if (parts.structure_setup) {
+    const auto& g = parts.structure_setup->params.geometry;
+    e.plate_elements = static_cast<long long>(g.cells_across) * g.cells_along;
+    const long long per_side = g.element == structure::ElementType::kQ9 ? 2 : 1;
+    e.plate_dofs = 2 * (per_side * g.cells_across + 1) * (per_side * g.cells_along + 1);
+  }
+  e.bytes_per_rank = kBaseBytes + kBytesPerParticle * e.particles / std::max(1, ranks) +
+                     kBytesPerElement * static_cast<double>(e.plate_elements);
+  e.machine_bytes = machine_memory();
+  if (e.machine_bytes > 0 && e.bytes_per_rank > e.machine_bytes) {
+    // The key of the part that takes most of it.
+    const bool water = kBytesPerParticle * e.particles > kBytesPerElement * static_cast<double>(e.plate_elements);
+    HALFETI_USER_ERROR(scene.file << ": " << (water ? "fluid.spacing" : "structure.cells_along")
+                                  << ": the run would need " << e.describe() << " on " << ranks
+                                  << " rank(s); coarsen it or run on more ranks");
+  }
+  return e;
+}
+
+}  // namespace halfeti::app
