@@ -93,7 +93,7 @@ std::shared_ptr<const Schema> fluid_schema() {
                .def(1.0e-6)
                .positive()
                .at_most(1.0));
-    s->add(Key::real("cfl", "Courant number of the time step").def(0.2).positive().at_most(1.0));
+    s->add(Key::real("cfl", "Courant number of the time step (above 1: past the usual limit, warned)").def(0.2).positive().at_most(3.0));
     s->add(Key::real("max_dt", "largest time step", "s").def(1e-3).positive());
     s->add(Key::real("min_dt", "time-step floor; the run stops below it", "s").def(1e-9).positive());
     s->add(Key::real("rebalance_threshold", "rebalance when max / target particles per rank exceeds this")

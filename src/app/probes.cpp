@@ -128,6 +128,8 @@ Registry<ProbeFactory> build_registry() {
         fluid_probe([](const sph::Fluid& f) { return f.kinetic_energy(); }));
   r.add("max_density_variation", "max |rho - rho0| / rho0 over the water [-]", keys({}),
         fluid_probe([](const sph::Fluid& f) { return f.max_density_variation(); }));
+  r.add("min_spacing", "closest pair of water particles at the last neighbour search, in dx [-] (clumping)",
+        keys({}), fluid_probe([](const sph::Fluid& f) { return f.min_spacing(); }));
   r.add("displacement", "displacement of a named plate node [m]",
         keys({Key::string("node", "top_left, top_centre, top_right, ... (hanging plate: bottom_left, bottom_centre, ...)").required(),
               Key::choice("component", "which component", {"x", "y"}).required()}),

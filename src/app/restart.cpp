@@ -77,42 +77,6 @@ std::string changed_physics_key(const std::string& saved_scene, const std::strin
   return "";
 }
 
-std::string encode_health_log(const HealthLog& log) {
-  std::string out;
-  for (const auto& e : log) {
-    char head[96];
-    std::snprintf(head, sizeof head, "%a\t%lld\t%d\t", e.time, e.step, e.fatal ? 1 : 0);
-    std::string message = e.message;
-    for (char& c : message)
-      if (c == '\n' || c == '\t') c = ' ';
-    out += head + e.kind + "\t" + message + "\n";
-  }
-  return out;
-}
-
-HealthLog decode_health_log(const std::string& text) {
-  HealthLog log;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> f;
-    std::size_t start = 0;
-    for (int k = 0; k < 4; ++k) {
-      const std::size_t tab = line.find('\t', start);
-      if (tab == std::string::npos) HALFETI_USER_ERROR("restart: a health-log line of the checkpoint is malformed");
-      f.push_back(line.substr(start, tab - start));
-      start = tab + 1;
-    }
-    HealthEvent e;
-    e.time = std::strtod(f[0].c_str(), nullptr);
-    e.step = std::strtoll(f[1].c_str(), nullptr, 10);
-    e.fatal = f[2] == "1";
-    e.kind = f[3];
-    e.message = line.substr(start);
-    log.push_back(e);
-  }
-  return log;
-}
-
 std::string encode_lines(const std::vector<std::string>& lines) {
   std::string out;
   for (const auto& l : lines) out += l + "\n";

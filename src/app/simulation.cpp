@@ -319,6 +319,9 @@ void Simulation::announce() {
        << " m, h = " << f->smoothing_length() << " m, c0 = " << f->sound_speed() << " m/s, scheme "
        << (f->params().scheme == sph::Scheme::kDeltaSph ? "delta-SPH" : "standard SPH");
     log_->line(os.str());
+    if (f->params().cfl > 1.0)
+      log_->warning("fluid.cfl = " + format("%g", f->params().cfl) +
+                    " is past the explicit step's usual stability limit (1): expect the run to fail");
   }
   if (parts_.plate) log_->line(parts_.plate->summary());
   for (const auto& c : parts_.cable_setups) {
@@ -416,6 +419,7 @@ double Simulation::advance(double remaining) {
   }
   if (parts_.structure_setup) {
     const double dt = std::min(parts_.structure_setup->time_step, remaining);
+    step_end_ = t_ + dt;
     step_structure(t_, dt);
     return dt;
   }
@@ -527,9 +531,12 @@ std::string Simulation::run_steps(double end, double start) {
   double dt = 0.0, step_wall = 0.0;
   while (t_ < end - tol) {
     const double step_start = wall_seconds();
+    in_step_ = true;
     dt = advance(end - t_);
     t_ = parts_.fluid ? parts_.fluid->time() : t_ + dt;
     ++steps_;
+    check_health();
+    in_step_ = false;
     if (t_ >= next_probe - tol) {
       sample(t_);
       next_probe = next_in_schedule(next_probe, probe_dt, t_, tol);
@@ -575,6 +582,7 @@ int Simulation::run() {
     stopped = run_steps(end, start);
   } catch (const NumericalError& e) {
     // Errors are raised on every rank together (the monitors reduce first), so the checkpoint is collective.
+    record_failure(e.what());
     log_->line(std::string("stopped: ") + e.what());
     try {
       write_checkpoint("at the failure", false);
@@ -603,16 +611,33 @@ int Simulation::run() {
   }
   if (last_checkpoint_step_ != steps_) write_checkpoint("final");  // unless the schedule just wrote this step's
   log_->line(progress_line(last_dt_, wall_seconds() - start));
-  write_summary("ok", wall_seconds() - start, loop_wall);
-  log_->line("done: " + std::to_string(steps_) + " steps, " + format("%.2f", wall_seconds() - start) + " s wall");
+  const HealthLog events = health_events();
+  const HealthTally health = tally(events);
+  write_summary(health.warnings > 0 ? "ok_with_warnings" : "ok", wall_seconds() - start, loop_wall);
+  log_->line("done: " + std::to_string(steps_) + " steps, " + format("%.2f", wall_seconds() - start) + " s wall, " +
+             warnings_line(health) + (health.warnings > 0 ? " (summary.json: health)" : ""));
   check_outputs();
   return 0;
 }
 
 HealthLog Simulation::health_events() const {
-  HealthLog out;
-  if (parts_.fluid) out = parts_.fluid->health_events();
-  return out;
+  return health_.merged(parts_.fluid ? parts_.fluid->health_events() : HealthLog{});
+}
+
+void Simulation::check_health() {
+  if (!parts_.cable_setups.empty()) health_.check_cables(comm_, parts_, t_, steps_);
+  health_.announce(*log_, parts_.fluid ? parts_.fluid->health_events() : HealthLog{});
+}
+
+void Simulation::record_failure(const std::string& message) {
+  // The failure's time and step are those of the step that failed (the fluid's clock has advanced to its end; the
+  // plate alone was going to step_end_); a failure before the first step is the static start's, at t = 0.
+  if (in_step_) {
+    t_ = parts_.fluid ? parts_.fluid->time() : step_end_;
+    ++steps_;
+    in_step_ = false;
+  }
+  health_.record_failure(t_, steps_, message, parts_.fluid ? parts_.fluid->health_events() : HealthLog{});
 }
 
 void Simulation::write_summary(const std::string& status, double wall, double loop_wall) {
@@ -674,10 +699,30 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
     j.set("mass_error",
           parts_.fluid && initial_mass_ > 0 ? io::Json((mass + spilled - initial_mass_) / initial_mass_) : io::Json());
     j.set("spilled_mass", parts_.fluid ? io::Json(spilled) : io::Json());
+    // Health: each kind's episodes, the first (its message) and the worst value with where and when; the list.
+    const HealthLog log = health_events();
+    const HealthTally health = tally(log);
+    const auto number = [](double v) { return std::isfinite(v) ? io::Json(v) : io::Json(); };
+    io::Json kinds = io::Json::object();
+    for (const auto& [kind, k] : health.kinds) {
+      io::Json kj = io::Json::object();
+      kj.set("episodes", k.episodes).set("fatal", k.fatal);
+      kj.set("first_time", k.first->time).set("first_step", k.first->step).set("first_message", k.first->message);
+      kj.set("worst", number(k.worst->worst)).set("worst_episode", k.worst->message).set("worst_time", number(k.worst->worst_time));
+      kj.set("worst_step", std::isfinite(k.worst->worst_time) ? io::Json(k.worst->worst_step) : io::Json());
+      io::Json place = io::Json::array();
+      place.push(number(k.worst->worst_x)).push(number(k.worst->worst_y));
+      kj.set("worst_at", std::isfinite(k.worst->worst_x) ? place : io::Json());
+      kinds.set(kind, kj);
+    }
+    io::Json hj = io::Json::object();
+    hj.set("warnings", health.warnings).set("summary", warnings_line(health)).set("by_kind", kinds);
+    j.set("health", hj);
     io::Json events = io::Json::array();
-    for (const auto& e : health_events()) {
+    for (const auto& e : log) {
       io::Json ev = io::Json::object();
       ev.set("time", e.time).set("step", e.step).set("kind", e.kind).set("fatal", e.fatal).set("message", e.message);
+      ev.set("worst", number(e.worst));
       events.push(ev);
     }
     j.set("health_events", events);

@@ -39,6 +39,7 @@ void Simulation::write_checkpoint(const std::string& label, bool between_steps) 
     c.blocks["cables"] = std::move(cables);
   }
   if (parts_.coupling) c.blocks["coupling"] = parts_.coupling->save_state();
+  c.texts["run_health"] = health_.save_state();
   const std::string dir = out_dir_ + "/checkpoints", path = dir + "/" + io::checkpoint_file_name(steps_);
   io::write_checkpoint(comm_, path, c);
   // The newest output.checkpoint_keep checkpoints stay (0: all).
@@ -94,6 +95,9 @@ void Simulation::restore(io::Checkpoint c) {
     st.active_warnings = decode_lines(text("active_warnings"));
     parts_.fluid->restore(std::move(st));
   }
+  const std::string run_health = text("run_health");
+  if (run_health.empty()) HALFETI_USER_ERROR("restart: '" << restart_path_ << "' holds no run health state");
+  health_.restore_state(run_health, parts_.fluid ? parts_.fluid->health_events() : HealthLog{});
   if (parts_.structure_setup) {
     collective_outcome(comm_, 0, parts_.structure_rank, [&] {
       parts_.plate->restore_state(block("plate"));  // before the cables: its pattern pass evaluates them

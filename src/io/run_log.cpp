@@ -27,6 +27,19 @@ void RunLog::line(const std::string& text) {
     std::fputc('\n', stdout);
     std::fflush(stdout);
   }
+  to_file(text);
+}
+
+void RunLog::warning(const std::string& text) {
+  if (!writer_) return;
+  const std::string line = "warning: " + text;
+  std::fflush(stdout);  // after the progress lines already printed
+  std::fputs(line.c_str(), stderr);
+  std::fputc('\n', stderr);
+  to_file(line);
+}
+
+void RunLog::to_file(const std::string& text) {
   if (file_) {
     std::fputs(text.c_str(), file_);
     std::fputc('\n', file_);

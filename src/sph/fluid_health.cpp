@@ -23,16 +23,46 @@ std::string point(double x, double y) {
 }
 }  // namespace
 
-void Fluid::warn(const std::string& kind, bool active, bool cleared, const std::string& message) {
+void Fluid::warn(const std::string& kind, bool active, bool cleared, const std::string& message, double value,
+                 double x, double y) {
   // One event when a condition starts; re-armed only once it has clearly gone (hysteresis), so a measure that
-  // hovers at its threshold does not flood the list.
+  // hovers at its threshold does not flood the list. While it holds, the episode keeps its worst value and place.
   auto it = std::find(active_warnings_.begin(), active_warnings_.end(), kind);
   if (active && it == active_warnings_.end()) {
     active_warnings_.push_back(kind);
-    events_.push_back({time_, step_, kind, message, false});
+    HealthEvent e;
+    e.time = time_;
+    e.step = step_;
+    e.kind = kind;
+    e.message = message;
+    events_.push_back(e);
   } else if (cleared && it != active_warnings_.end()) {
     active_warnings_.erase(it);
   }
+  if (!active) return;
+  for (auto e = events_.rbegin(); e != events_.rend(); ++e)
+    if (e->kind == kind && !e->fatal) {
+      health_observe(*e, value, time_, step_, x, y);
+      break;
+    }
+}
+
+const HealthEvent* Fluid::open_warning(const std::string& kind) const {
+  if (std::find(active_warnings_.begin(), active_warnings_.end(), kind) == active_warnings_.end()) return nullptr;
+  for (auto e = events_.rbegin(); e != events_.rend(); ++e)
+    if (e->kind == kind && !e->fatal) return &*e;
+  return nullptr;
+}
+
+void Fluid::fatal(const std::string& kind, const std::string& message) {
+  HealthEvent e;
+  e.time = time_;
+  e.step = step_;
+  e.kind = kind;
+  e.message = message;
+  e.fatal = true;
+  events_.push_back(e);
+  HALFETI_NUMERICAL_ERROR(message);
 }
 
 void Fluid::remove_spilled() {
@@ -40,7 +70,7 @@ void Fluid::remove_spilled() {
   // place (owned particles are compacted before migration), counted, and reported once per episode.
   const double H = params_.tank_height;
   long removed = 0, key = std::numeric_limits<long>::max();
-  double mass = 0.0;
+  double mass = 0.0, first_x = 0.0, first_y = 0.0;
   std::string msg;
   int kept = 0;
   for (int i = 0; i < n_owned_; ++i) {
@@ -49,6 +79,8 @@ void Fluid::remove_spilled() {
       mass += mass_[i];
       if (gid_[i] < key) {
         key = gid_[i];
+        first_x = x_[i];
+        first_y = y_[i];
         msg = "particle " + std::to_string(gid_[i]) + " at " + point(x_[i], y_[i]);
       }
       continue;
@@ -69,7 +101,21 @@ void Fluid::remove_spilled() {
   if (sums[0] > 0)
     os << where(time_, step_) << static_cast<long>(sums[0]) << " particle(s) left over the tank's open top (first: "
        << first << "); removed, " << spilled_mass_ << " kg/m spilled so far";
-  warn("spilled", sums[0] > 0, sums[0] == 0, os.str());
+  // Worst: the water spilled so far [kg/m]; place: where the first particle over the top (lowest id) was.
+  double place[2] = {first_x, first_y};
+  if (sums[0] > 0) {
+    long lowest = key;
+    MPI_Allreduce(&key, &lowest, 1, MPI_LONG, MPI_MIN, comm_.get());
+    int mine = removed > 0 && key == lowest ? rank_ : size_, root = size_;
+    MPI_Allreduce(&mine, &root, 1, MPI_INT, MPI_MIN, comm_.get());
+    MPI_Bcast(place, 2, MPI_DOUBLE, root, comm_.get());
+  }
+  // One episode while water keeps leaving: it ends after 0.05 s without a spill (a sloshing wave throws its crest
+  // over the top particle by particle, over a few steps each).
+  constexpr double kQuiet = 0.05;  // [s]
+  const HealthEvent* open = open_warning("spilled");
+  const bool quiet = sums[0] == 0 && (!open || time_ - open->worst_time > kQuiet);
+  warn("spilled", sums[0] > 0, quiet, os.str(), spilled_mass_, place[0], place[1]);
 }
 
 void Fluid::check_health() {
@@ -103,18 +149,13 @@ void Fluid::check_health() {
     }
   }
   const bool mine = !msg.empty();
-  const std::string fatal = first_problem(comm_.get(), mine, key, msg);
-  if (!fatal.empty()) {
-    const std::string k = fatal.find("NaN") != std::string::npos ? "nan" : "outside_tank";
-    events_.push_back({time_, step_, k, fatal, true});
-    HALFETI_NUMERICAL_ERROR(fatal);
-  }
+  const std::string failed = first_problem(comm_.get(), mine, key, msg);
+  if (!failed.empty()) fatal(failed.find("NaN") != std::string::npos ? "nan" : "outside_tank", failed);
   if (dt_ < params_.min_dt) {
     std::ostringstream os;
     os << at << "time step " << dt_ << " s fell below the floor " << params_.min_dt
        << " s (a particle accelerates violently: check the walls and the sound speed)";
-    events_.push_back({time_, step_, "dt_floor", os.str(), true});
-    HALFETI_NUMERICAL_ERROR(os.str());
+    fatal("dt_floor", os.str());
   }
 
   // Density variation (weak compressibility lost): warning, fatal only if the scene says so.
@@ -134,32 +175,59 @@ void Fluid::check_health() {
   const bool dense = global.v > params_.max_density_variation;
   if (dense) {
     std::string m;
+    double place[2] = {0.0, 0.0};
     if (rank_ == global.r && worst >= 0) {
       std::ostringstream os;
       os << at << "density variation " << 100.0 * global.v << "% > " << 100.0 * params_.max_density_variation
          << "% at particle " << gid_[worst] << " " << point(x_[worst], y_[worst])
          << " (weak compressibility lost: raise the sound speed)";
       m = os.str();
+      place[0] = x_[worst];
+      place[1] = y_[worst];
     }
     m = first_problem(comm_.get(), rank_ == global.r, 0, m);
-    if (params_.density_variation_fatal) {
-      events_.push_back({time_, step_, "density_variation", m, true});
-      HALFETI_NUMERICAL_ERROR(m);
-    }
-    warn("density_variation", true, false, m);
+    if (params_.density_variation_fatal) fatal("density_variation", m);
+    MPI_Bcast(place, 2, MPI_DOUBLE, global.r, comm_.get());
+    warn("density_variation", true, false, m, global.v, place[0], place[1]);
   } else {
     warn("density_variation", false, global.v < 0.8 * params_.max_density_variation, "");
   }
 
-  // Spacing collapse (tensile instability): closest pair found by the last neighbour search.
+  // Spacing collapse (tensile instability): closest pair found by the last neighbour search, in dx; its place
+  // (the pair's first particle, where it is now) looked up only while the condition holds.
   double dmin = search_.min_distance();
   MPI_Allreduce(MPI_IN_PLACE, &dmin, 1, MPI_DOUBLE, MPI_MIN, comm_.get());
   const bool collapsed = dmin < params_.spacing_collapse_fraction * dx_;
   std::ostringstream os;
-  if (collapsed)
+  double place[2] = {std::nan(""), std::nan("")};
+  if (collapsed) {
     os << at << "two particles came within " << dmin << " m (" << dmin / dx_
        << " dx): spacing collapse, tensile instability (keep the tensile correction on)";
-  warn("spacing_collapse", collapsed, dmin > 1.5 * params_.spacing_collapse_fraction * dx_, os.str());
+    const int i = closest_pair_particle(dmin);
+    struct {
+      double v;
+      int r;
+    } mine{i >= 0 ? 0.0 : 1.0, rank_}, lowest{0.0, 0};
+    MPI_Allreduce(&mine, &lowest, 1, MPI_DOUBLE_INT, MPI_MINLOC, comm_.get());
+    if (i >= 0) {
+      place[0] = x_[i];
+      place[1] = y_[i];
+    }
+    MPI_Bcast(place, 2, MPI_DOUBLE, lowest.r, comm_.get());
+  }
+  warn("spacing_collapse", collapsed, dmin > 1.5 * params_.spacing_collapse_fraction * dx_, os.str(), dmin / dx_,
+       place[0], place[1]);
+}
+
+int Fluid::closest_pair_particle(double dmin) const {
+  // The owned particle with a neighbour at dmin (the search's own minimum, so an exact match exists on the rank
+  // that found it; -1 elsewhere). The pair list holds the offsets at the search.
+  const double r2 = dmin * dmin;
+  if (pairs_.start.size() != static_cast<std::size_t>(n_owned_) + 1) return -1;  // particles spilled since
+  for (int i = 0; i < n_owned_; ++i)
+    for (int k = pairs_.start[i]; k < pairs_.start[i + 1]; ++k)
+      if (pairs_.ex[k] * pairs_.ex[k] + pairs_.ey[k] * pairs_.ey[k] <= r2 * (1.0 + 1e-12)) return i;
+  return -1;
 }
 
 }  // namespace halfeti::sph

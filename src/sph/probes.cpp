@@ -97,4 +97,10 @@ double Fluid::max_density_variation() const {
   return v;
 }
 
+double Fluid::min_spacing() const {
+  double d = search_.min_distance();
+  MPI_Allreduce(MPI_IN_PLACE, &d, 1, MPI_DOUBLE, MPI_MIN, comm_.get());
+  return d / dx_;
+}
+
 }  // namespace halfeti::sph

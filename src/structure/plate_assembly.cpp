@@ -137,7 +137,7 @@ void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& n
                                                position(nodes[3]));
         std::ostringstream what;
         what << error.what() << " in element " << e << " at (" << centre.x() << ", " << centre.y()
-             << ") m, t = " << time_ << " s; hint: smaller dt, or check the loads";
+             << ") m, " << when() << "; hint: smaller dt, or check the loads";
         failure = what.str();
         break;
       }
@@ -176,7 +176,7 @@ void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& n
       const Eigen::Vector2d centre = position(nodes[4]);
       std::ostringstream what;
       what << error.what() << " in element " << e << " at (" << centre.x() << ", " << centre.y()
-           << ") m, t = " << time_ << " s; hint: smaller dt, or check the loads";
+           << ") m, " << when() << "; hint: smaller dt, or check the loads";
       failure = what.str();
       break;
     }

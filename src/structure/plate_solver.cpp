@@ -242,7 +242,7 @@ Vec PlateSolver::solve_newton_increment() {
   ScopedTimer timer(timers_, "structure_solve");
   const KSPConvergedReason reason = solve_with(ksp_.get(), matrix_.get(), rhs_.get(), solution_.get());
   if (reason < 0)
-    HALFETI_NUMERICAL_ERROR("structure: KSP solve failed at t = " << time_ << " s, " << ksp_failure(ksp_.get(), reason)
+    HALFETI_NUMERICAL_ERROR("structure: KSP solve failed (" << when() << "), " << ksp_failure(ksp_.get(), reason)
                                                                   << "; try -structure_pc_type lu");
   return solution_.get();
 }
@@ -332,15 +332,15 @@ void PlateSolver::end_step() {
 // assembled only when another iteration follows. The residual is the same either way (the same element force
 // code), so the iterates are those of assembling the full system every time (the split-API test checks this
 // bit for bit).
-void PlateSolver::newton_loop(double t, const char* what) {
+void PlateSolver::newton_loop(const char* what) {
   const int max_iterations = params_.newton.max_iterations;
   assemble_newton_system();
   for (;;) {
     if (converged()) return;
     if (last_.newton_iterations >= max_iterations)
       HALFETI_NUMERICAL_ERROR("structure: Newton did not converge in "
-                              << max_iterations << " iterations (" << what << " at t = " << t
-                              << " s): ||r|| = " << residual_norm() << " N/m, last ||du||_inf = "
+                              << max_iterations << " iterations (" << what << ", " << when()
+                              << "): ||r|| = " << residual_norm() << " N/m, last ||du||_inf = "
                               << last_.increment_norm << " m");
     apply_increment(solve_newton_increment());
     if (converged()) return;
@@ -350,9 +350,17 @@ void PlateSolver::newton_loop(double t, const char* what) {
   }
 }
 
+std::string PlateSolver::when() const {
+  // The static start solves the tank at rest, before the motion starts (its loads are those of t = -1 s).
+  if (mode_ == Mode::kStatic) return "in the static start, the tank at rest before t = 0";
+  std::ostringstream os;
+  os << "t = " << time_ << " s";
+  return os.str();
+}
+
 StepReport PlateSolver::step(double t, double dt) {
   begin_step(t, dt);
-  newton_loop(t + dt, "time step");
+  newton_loop("time step");
   end_step();
   return last_;
 }
@@ -364,7 +372,7 @@ StepReport PlateSolver::solve_static(double t, int load_increments) {
   for (int k = 1; k <= load_increments; ++k) {
     begin_static(t);
     ramp_ = double(k) / load_increments;
-    newton_loop(t, "static solve");
+    newton_loop("static solve");
     end_step();
     total.newton_iterations += last_.newton_iterations;
   }

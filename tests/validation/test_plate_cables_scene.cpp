@@ -37,8 +37,11 @@ TEST(PlateCablesScene, ANewtonFailureStopsEveryRankWithACheckpoint) {
   EXPECT_EQ(status, 3);
   const std::string err = test::read_text(out + ".stderr");
   EXPECT_NE(err.find("halfeti: error: structure: Newton did not converge in 1 iterations"), std::string::npos) << err;
+  // The pretensioned equilibrium is the static start's: said so, not as a time (it once read "t = -1 s").
+  EXPECT_NE(err.find("in the static start, the tank at rest before t = 0"), std::string::npos) << err;
+  EXPECT_EQ(err.find("t = -1"), std::string::npos) << err;
   EXPECT_NE(test::read_text(out + "/summary.json").find("\"exit_status\": \"numerical_failure\""), std::string::npos);
   const auto checkpoints = io::list_checkpoints(out + "/checkpoints");
   ASSERT_EQ(checkpoints.size(), 1u);
-  EXPECT_EQ(io::read_checkpoint(checkpoints[0]).steps, 0);  // the failure is in the first step's Newton
+  EXPECT_EQ(io::read_checkpoint(checkpoints[0]).steps, 0);  // before the first step
 }

@@ -1,12 +1,10 @@
 // What a restart needs beyond the parts' own state (simulation.cpp saves and restores those): whether the scene
-// of the continued run may continue the saved one, the health log as text, and a run folder's bookkeeping (which
+// of the continued run may continue the saved one, lists of lines as text, and a run folder's bookkeeping (which
 // outputs it holds, the probe rows a continued run carries over).
 #pragma once
 
 #include <string>
 #include <vector>
-
-#include "halfeti/core/health.hpp"
 
 namespace halfeti::app {
 
@@ -14,9 +12,7 @@ namespace halfeti::app {
 // may change (scene.end_time, scene.description, output.*), with both values; empty when none does.
 std::string changed_physics_key(const std::string& saved_scene, const std::string& scene);
 
-// The health log as text and back, exactly (times in hexadecimal floating point).
-std::string encode_health_log(const HealthLog& log);
-HealthLog decode_health_log(const std::string& text);
+// Lines of text as one text and back (the health log's text is core/health.hpp's).
 std::string encode_lines(const std::vector<std::string>& lines);
 std::vector<std::string> decode_lines(const std::string& text);
 

@@ -10,6 +10,7 @@
 
 #include "halfeti/app/parts.hpp"
 #include "halfeti/app/probes.hpp"
+#include "halfeti/app/run_health.hpp"
 #include "halfeti/core/health.hpp"
 #include "halfeti/core/scene.hpp"
 #include "halfeti/core/timers.hpp"
@@ -67,7 +68,9 @@ class Simulation {
   void check_outputs();
   void write_summary(const std::string& status, double wall, double loop_wall);
   std::string progress_line(double dt, double wall) const;
-  HealthLog health_events() const;
+  HealthLog health_events() const;  // every part's, in step order
+  void check_health();               // after a step: the run's own monitors, then every new warning printed
+  void record_failure(const std::string& message);
 
   MPI_Comm comm_;
   int rank_ = 0, size_ = 1;
@@ -80,7 +83,10 @@ class Simulation {
   std::unique_ptr<io::RunLog> log_;
   std::unique_ptr<io::FieldSeries> fluid_fields_, plate_fields_;
   PhaseTimers timers_;
+  RunHealth health_;
   double t_ = 0.0;
+  double step_end_ = 0.0;  // the time the step under way advances to (a failure's time)
+  bool in_step_ = false;   // between a step's start and its end (a failure outside a step is the static start's)
   long long steps_ = 0, steps_at_start_ = 0, last_checkpoint_step_ = -1, initial_particles_ = 0;
   double initial_mass_ = 0.0, max_density_variation_ = 0.0;
   std::string restart_path_;  // the checkpoint continued from ("" for a fresh run)

@@ -18,10 +18,14 @@ class RunLog {
   RunLog& operator=(const RunLog&) = delete;
 
   void line(const std::string& text);
+  // "warning: text" on stderr (also when progress is not echoed) and in the log file.
+  void warning(const std::string& text);
   bool writer() const { return writer_; }
   const std::string& failure() const { return failure_; }
 
  private:
+  void to_file(const std::string& text);
+
   std::FILE* file_ = nullptr;
   std::string path_, failure_;
   bool writer_ = false;

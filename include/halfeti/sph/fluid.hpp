@@ -93,6 +93,7 @@ class Fluid {
   double spilled_mass() const { return spilled_mass_; }
   double kinetic_energy() const;
   double max_density_variation() const;                     // max |rho - rho0| / rho0
+  double min_spacing() const;  // closest fluid pair at the last neighbour search, in dx (over every rank)
 
   const PhaseTimers& timers() const { return timers_; }
   const std::vector<HealthEvent>& health_events() const { return events_; }
@@ -128,7 +129,13 @@ class Fluid {
   void maybe_rebalance();
   void migrate();
   std::vector<long> global_cell_counts() const;
-  void warn(const std::string& kind, bool active, bool cleared, const std::string& message);
+  // A warning's episode (start, end by hysteresis, worst value and place while it holds); a fatal event, recorded
+  // and raised as NumericalError.
+  void warn(const std::string& kind, bool active, bool cleared, const std::string& message, double value = 0.0,
+            double x = 0.0, double y = 0.0);
+  [[noreturn]] void fatal(const std::string& kind, const std::string& message);
+  int closest_pair_particle(double dmin) const;
+  const HealthEvent* open_warning(const std::string& kind) const;  // the episode of `kind` under way, or null
 
   Communicator comm_;
   int rank_ = 0, size_ = 1;

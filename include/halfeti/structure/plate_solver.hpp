@@ -188,7 +188,7 @@ class PlateSolver {
   // the convergence check after an increment in step() and solve_static().
   void assemble_residual();
   // The plate-alone Newton loop of step() and solve_static().
-  void newton_loop(double t, const char* what);
+  void newton_loop(const char* what);
   void compute_external(double t);
   Q9Coordinates element_displacement(int e) const;
   Q4Coordinates quad_displacement(int e) const;
@@ -223,6 +223,7 @@ class PlateSolver {
   Eigen::VectorXd u_, v_, a_, u_n_, v_n_, a_n_;
   Mode mode_ = Mode::kStatic;
   double time_ = 0.0;  // of the state being solved for (t + dt in a step), for error messages
+  std::string when() const;  // "t = ... s", or the static start's words, for error messages
   double dt_ = 0.0, load_factor_ = 1.0, ramp_ = 1.0;
   double residual_norm_ = 0.0, first_residual_norm_ = -1.0, increment_norm_ = -1.0, force_scale_ = 0.0;
   StepReport last_;
