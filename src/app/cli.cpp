@@ -17,12 +17,14 @@ usage:
   halfeti check SCENE.yaml [--set key.path=value ...]
   halfeti cable --from X1,Y1 --to X2,Y2 --modulus E --area A --density RHO
                 (--unstretched-length L0 | --tension-stress S) [...]   (halfeti cable --help)
+  halfeti compare RUN --probe NAME --metric METRIC [--reference FILE ...]   (halfeti compare --help)
   halfeti reference        print the scene reference (Markdown)
   halfeti --help | --version
 
 run      runs the scene; outputs go to DIR (default out/<scene.name>): probes.csv, summary.json, log.txt,
          scene.resolved.yaml, fields/ (HDF5 + XDMF) and checkpoints/.
 check    checks the scene (keys, types, ranges, files it names) and prints the resolved scene.
+compare  one error metric of a run's probe against reference data (RMS, peak, frequency, ...), as JSON.
 --set    overrides one key before checking, e.g. --set fluid.spacing=0.002 --set probes.0.at=[0.3,0.005]
 --restart  continues a run from a checkpoint file, or from the latest checkpoint of a run folder; the scene (with
          the same --set) may change only scene.end_time, scene.description and output.*. Into the run's own
@@ -56,8 +58,8 @@ Command parse_command_line(const std::vector<std::string>& args) {
     c.kind = Command::Kind::kReference;
     return c;
   }
-  if (word == "cable") {
-    c.kind = Command::Kind::kCable;
+  if (word == "cable" || word == "compare") {
+    c.kind = word == "cable" ? Command::Kind::kCable : Command::Kind::kCompare;
     c.tool_args.assign(args.begin() + 1, args.end());
     return c;
   }
@@ -66,7 +68,7 @@ Command parse_command_line(const std::vector<std::string>& args) {
   else if (word == "check")
     c.kind = Command::Kind::kCheck;
   else
-    HALFETI_USER_ERROR("unknown command '" << word << "'; expected run, check, cable, reference, --help or --version");
+    HALFETI_USER_ERROR("unknown command '" << word << "'; expected run, check, cable, compare, reference, --help or --version");
 
   for (size_t i = 1; i < args.size(); ++i) {
     const std::string& a = args[i];

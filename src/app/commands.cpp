@@ -10,8 +10,10 @@
 #include "halfeti/app/run_size.hpp"
 #include "halfeti/app/simulation.hpp"
 #include "halfeti/cable/cable_tool.hpp"
+#include "halfeti/core/collective.hpp"
 #include "halfeti/core/error.hpp"
 #include "halfeti/core/scene.hpp"
+#include "halfeti/io/compare_tool.hpp"
 
 namespace halfeti::app {
 
@@ -29,11 +31,16 @@ int execute(const std::vector<std::string>& args, MPI_Comm comm) {
     case Command::Kind::kReference:
       if (rank == 0) std::cout << scene::reference_markdown(*scene_schema(), "halfeti scene reference");
       return 0;
-    case Command::Kind::kCable: {
-      // A serial design tool: rank 0 answers, the others agree on the outcome.
+    case Command::Kind::kCable:
+    case Command::Kind::kCompare: {
+      // Serial tools: rank 0 answers, the others share its outcome (its error, if any, on every rank).
       std::ostringstream out;
       int status = 0;
-      if (rank == 0) status = cable::run_cable_tool(cmd.tool_args, out);
+      collective_outcome(comm, 0, rank == 0, [&] {
+        status = cmd.kind == Command::Kind::kCable ? cable::run_cable_tool(cmd.tool_args, out)
+                                                   : io::run_compare_tool(cmd.tool_args, out);
+      });
+      MPI_Bcast(&status, 1, MPI_INT, 0, comm);
       if (rank == 0) std::cout << out.str();
       return status;
     }

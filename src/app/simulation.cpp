@@ -1,6 +1,7 @@
 #include "halfeti/app/simulation.hpp"
 
 #include <algorithm>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <cctype>
@@ -658,6 +659,16 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
     timers.merge(plate);
   }
   const long long dofs = parts_.plate ? parts_.plate->dof_count() : 0;  // written by rank 0, a structure rank
+  // Cost: CPU seconds (user + system) summed over the ranks, and the peak resident memory of the busiest rank and
+  // of all ranks together (getrusage: this process since it started).
+  struct rusage usage {};
+  getrusage(RUSAGE_SELF, &usage);
+  const double cpu_here = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                          1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+  const double rss_here = 1024.0 * static_cast<double>(usage.ru_maxrss);  // Linux reports kB
+  double sums[2] = {cpu_here, rss_here}, rss_max = rss_here;
+  MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, comm_);
+  MPI_Allreduce(MPI_IN_PLACE, &rss_max, 1, MPI_DOUBLE, MPI_MAX, comm_);
   collective_outcome(comm_, 0, rank_ == 0, [&] {  // rank 0 writes; a failed write stops every rank
     const scene::Node root = scene_.root();
     io::Json j = io::Json::object();
@@ -690,6 +701,10 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
     j.set("ns_per_particle_step", particles > 0 && steps_here > 0
                                       ? io::Json(1e9 * loop_wall / (static_cast<double>(particles) * steps_here))
                                       : io::Json());
+    io::Json cost = io::Json::object();
+    cost.set("cpu_seconds", sums[0]).set("cpu_seconds_per_rank", sums[0] / size_);
+    cost.set("peak_memory_bytes_busiest_rank", rss_max).set("peak_memory_bytes_all_ranks", sums[1]);
+    j.set("cost", cost);  // this run's (a restarted run's: since its restart)
     io::Json tj = io::Json::object();
     for (const auto& [phase, seconds] : timers.all()) tj.set(phase, seconds);
     j.set("timers", tj);

@@ -69,6 +69,60 @@ double Fluid::free_surface_elevation(double px) const {
   return std::isfinite(top) ? top + 0.5 * dx_ : 0.0;
 }
 
+double Fluid::surface_level(double px) const {
+  // The bulk's free surface at x, robust to splashes: the water's kernel-interpolated volume fraction
+  // c(y) = sum V_j W(|(x, y) - r_j|) (the tank's walls and floor as mirrors, so that c = 1 in the bulk next to them)
+  // sampled upward from the floor every dx / 8; the level is the first place it falls below 1/2 (linearly
+  // interpolated): a flat surface's, there, is its top particles' centres plus dx / 2, as the elevation probe's.
+  // A jet or spray above the bulk, separated from it by a gap, is not counted. The particles within one support of
+  // the vertical line are gathered on every rank and summed in global-id order (the same value on any ranks).
+  const double rc = kernel_.support(), L = params_.tank_length;
+  std::vector<double> mine;  // gid, x, y, volume
+  for (int i = 0; i < n_owned_; ++i)
+    if (std::abs(x_[i] - px) < rc || std::abs(-x_[i] - px) < rc || std::abs(2.0 * L - x_[i] - px) < rc)
+      mine.insert(mine.end(), {static_cast<double>(gid_[i]), x_[i], y_[i], mass_[i] / rho_[i]});
+  int count = static_cast<int>(mine.size());
+  std::vector<int> counts(size_), offsets(size_, 0);
+  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_.get());
+  for (int r = 1; r < size_; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+  std::vector<double> all(offsets[size_ - 1] + counts[size_ - 1]);
+  MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, comm_.get());
+  const std::size_t n = all.size() / 4;
+  std::vector<std::size_t> order(n);
+  for (std::size_t k = 0; k < n; ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return all[4 * a] < all[4 * b]; });
+  // Each particle and its mirrors in the side walls and the floor.
+  std::vector<double> sx, sy, sv;
+  for (std::size_t k : order) {
+    const double x = all[4 * k + 1], y = all[4 * k + 2], v = all[4 * k + 3];
+    for (double mx : {x, -x, 2.0 * L - x})
+      if (std::abs(mx - px) < rc)
+        for (double my : {y, -y}) {
+          sx.push_back(mx);
+          sy.push_back(my);
+          sv.push_back(v);
+        }
+  }
+  const auto fraction = [&](double y) {
+    double c = 0.0;
+    for (std::size_t k = 0; k < sx.size(); ++k) {
+      const double r = std::hypot(sx[k] - px, sy[k] - y);
+      if (r < rc) c += sv[k] * kernel_.value(r);
+    }
+    return c;
+  };
+  const double step = dx_ / 8.0;
+  double y = 0.0, c = fraction(0.0);
+  if (c < 0.5) return 0.0;  // no water at the floor here
+  for (;;) {
+    const double y2 = y + step, c2 = fraction(y2);
+    if (c2 < 0.5) return y + step * (c - 0.5) / (c - c2);
+    if (y2 > params_.tank_height + rc) return params_.tank_height;  // a column up to the open top
+    y = y2;
+    c = c2;
+  }
+}
+
 double Fluid::front_position(double y_max) const {
   double front = -std::numeric_limits<double>::infinity();
   for (int i = 0; i < n_owned_; ++i)

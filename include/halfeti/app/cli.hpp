@@ -7,7 +7,7 @@
 namespace halfeti::app {
 
 struct Command {
-  enum class Kind { kRun, kCheck, kHelp, kVersion, kReference, kCable };
+  enum class Kind { kRun, kCheck, kHelp, kVersion, kReference, kCable, kCompare };
   Kind kind = Kind::kHelp;
   std::string scene;                     // run, check
   std::vector<std::string> overrides;    // --set key.path=value

@@ -87,6 +87,9 @@ class Fluid {
   double pressure_at(double x, double y) const;
   std::array<double, 2> velocity_at(double x, double y) const;
   double free_surface_elevation(double x) const;            // top fluid particle in |x_i - x| <= dx, + dx/2
+  // The bulk's surface at x from the kernel-interpolated volume fraction (1/2 crossing upward from the floor):
+  // robust to run-up jets and spray, which the top particle follows.
+  double surface_level(double x) const;
   double front_position(double y_max) const;                // max x of fluid particles below y_max, + dx/2
   double total_mass() const;
   // Water that left over the tank's open top (removed from the run, per unit depth [kg/m]), every rank.
