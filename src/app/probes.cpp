@@ -50,6 +50,19 @@ ProbeFactory structure_probe(Read read) {
   };
 }
 
+// A water probe read along the vertical line at `x` (inside the tank).
+template <class Read>
+ProbeFactory at_x(Read read) {
+  return [read](const scene::Node& p, Parts& parts) {
+    const auto& f = parts.require_fluid(p.path());
+    const double x = p.real("x");
+    if (x > f.tank_length)
+      HALFETI_USER_ERROR(p.key_path("x") << ": " << x << " lies outside the tank [0, " << f.tank_length << "]");
+    const Parts* owner = &parts;
+    return ProbeColumn{p.string("name"), [owner, read, x](double) { return read(*owner->fluid, x); }};
+  };
+}
+
 // The plate-water coupling's probes need both a plate and water.
 void require_coupling(const scene::Node& p, const Parts& parts) {
   parts.require_structure(p.path());
@@ -106,25 +119,13 @@ Registry<ProbeFactory> build_registry() {
                              [owner, at, c](double) { return owner->fluid->velocity_at(at[0], at[1])[c]; }};
         });
   r.add("elevation", "free-surface elevation at x: top fluid particle within dx of x, plus dx/2 (follows run-up jets) [m]",
-        keys({Key::real("x", "where", "m").required().non_negative()}), [](const scene::Node& p, Parts& parts) {
-          const auto& f = parts.require_fluid(p.path());
-          const double x = p.real("x");
-          if (x > f.tank_length)
-            HALFETI_USER_ERROR(p.key_path("x") << ": " << x << " lies outside the tank [0, " << f.tank_length << "]");
-          const Parts* owner = &parts;
-          return ProbeColumn{p.string("name"), [owner, x](double) { return owner->fluid->free_surface_elevation(x); }};
-        });
+        keys({Key::real("x", "where", "m").required().non_negative()}),
+        at_x([](const sph::Fluid& f, double x) { return f.free_surface_elevation(x); }));
   r.add("surface_level",
         "the bulk's free surface at x: where the water's kernel-interpolated volume fraction falls below 1/2, upward "
         "from the floor (run-up jets and spray above a gap not counted) [m]",
-        keys({Key::real("x", "where", "m").required().non_negative()}), [](const scene::Node& p, Parts& parts) {
-          const auto& f = parts.require_fluid(p.path());
-          const double x = p.real("x");
-          if (x > f.tank_length)
-            HALFETI_USER_ERROR(p.key_path("x") << ": " << x << " lies outside the tank [0, " << f.tank_length << "]");
-          const Parts* owner = &parts;
-          return ProbeColumn{p.string("name"), [owner, x](double) { return owner->fluid->surface_level(x); }};
-        });
+        keys({Key::real("x", "where", "m").required().non_negative()}),
+        at_x([](const sph::Fluid& f, double x) { return f.surface_level(x); }));
   r.add("front", "surge front: largest x of the water below a height, plus dx/2 [m]",
         keys({Key::real("below", "only particles below this height count", "m").required().positive()}),
         [](const scene::Node& p, Parts& parts) {

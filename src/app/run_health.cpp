@@ -46,12 +46,7 @@ void RunHealth::check_cables(MPI_Comm comm, const Parts& parts, double t, long l
     const std::string& name = parts.cable_setups[i].name;
     const Cable was = cables_[i];
     const auto open = [&](const std::string& kind, const std::string& message) {
-      HealthEvent e;
-      e.time = t;
-      e.step = step;
-      e.kind = kind;
-      e.message = message;
-      events_.push_back(e);
+      events_.push_back(health_event(t, step, kind, message));
       open_[i] = static_cast<long>(events_.size()) - 1;
     };
     if (slack && was != Cable::kSlack) {
@@ -78,15 +73,11 @@ void RunHealth::check_cables(MPI_Comm comm, const Parts& parts, double t, long l
 
 void RunHealth::record_failure(double t, long long step, const std::string& message, const HealthLog& fluid) {
   if (!fluid.empty() && fluid.back().fatal && fluid.back().step == step) return;  // the fluid's own, recorded
-  HealthEvent e;
-  e.time = t;
-  e.step = step;
-  e.kind = message.rfind("structure", 0) == 0 ? "structure_failure"
-           : message.rfind("contact", 0) == 0 || message.rfind("coupling", 0) == 0 ? "coupling_failure"
-                                                                                   : "numerical_failure";
-  e.message = message;
-  e.fatal = true;
-  events_.push_back(e);
+  const std::string kind = message.rfind("structure", 0) == 0 ? "structure_failure"
+                           : message.rfind("contact", 0) == 0 || message.rfind("coupling", 0) == 0
+                               ? "coupling_failure"
+                               : "numerical_failure";
+  events_.push_back(health_event(t, step, kind, message, true));
 }
 
 void RunHealth::announce(io::RunLog& log, const HealthLog& fluid) {

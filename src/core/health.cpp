@@ -9,6 +9,17 @@
 
 namespace halfeti {
 
+HealthEvent health_event(double time, long long step, const std::string& kind, const std::string& message,
+                         bool fatal) {
+  HealthEvent e;
+  e.time = time;
+  e.step = step;
+  e.kind = kind;
+  e.message = message;
+  e.fatal = fatal;
+  return e;
+}
+
 bool health_worse(const std::string& kind, double a, double b) {
   if (std::isnan(b)) return !std::isnan(a);
   if (std::isnan(a)) return false;

@@ -30,12 +30,7 @@ void Fluid::warn(const std::string& kind, bool active, bool cleared, const std::
   auto it = std::find(active_warnings_.begin(), active_warnings_.end(), kind);
   if (active && it == active_warnings_.end()) {
     active_warnings_.push_back(kind);
-    HealthEvent e;
-    e.time = time_;
-    e.step = step_;
-    e.kind = kind;
-    e.message = message;
-    events_.push_back(e);
+    events_.push_back(health_event(time_, step_, kind, message));
   } else if (cleared && it != active_warnings_.end()) {
     active_warnings_.erase(it);
   }
@@ -55,13 +50,7 @@ const HealthEvent* Fluid::open_warning(const std::string& kind) const {
 }
 
 void Fluid::fatal(const std::string& kind, const std::string& message) {
-  HealthEvent e;
-  e.time = time_;
-  e.step = step_;
-  e.kind = kind;
-  e.message = message;
-  e.fatal = true;
-  events_.push_back(e);
+  events_.push_back(health_event(time_, step_, kind, message, true));
   HALFETI_NUMERICAL_ERROR(message);
 }
 

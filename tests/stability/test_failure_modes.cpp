@@ -98,3 +98,41 @@ TEST(FailureModes, AStepPastTheStabilityLimitStopsAtTheFailedStepWithItsTimeInTh
   EXPECT_EQ(probes.find("nan"), std::string::npos);
   EXPECT_EQ(probes.find("inf"), std::string::npos);
 }
+
+TEST(FailureModes, TheTensileInstabilityIsFoundByTheSpacingMonitorWithItsPlace) {
+  // Standard SPH without Monaghan's correction under the paper's pulse: particles clump (docs/stability.md: from
+  // 0.175 s on, to 0.0007 dx); the monitor warns, and summary.json keeps the closest pair (in dx) and where it was.
+  const std::string out = test::binary_path("stability_tensile");
+  ASSERT_EQ(test::run_scene(scene("tank_shake"), out,
+                            "--set fluid.scheme=standard --set fluid.tensile_correction=false --set scene.end_time=0.25"),
+            0)
+      << test::read_text(out + ".stderr");
+  EXPECT_NE(test::read_text(out + ".stderr").find("spacing collapse, tensile instability"), std::string::npos);
+  const std::string health = member(test::read_text(out + "/summary.json"), "health");
+  const std::size_t at = health.find("\"spacing_collapse\": {");
+  ASSERT_NE(at, std::string::npos) << health;
+  const std::string kind = health.substr(at);
+  EXPECT_LT(std::stod(kind.substr(kind.find("\"worst\": ") + 9)), 0.2);  // below the monitor's 0.2 dx
+  const std::string place = kind.substr(kind.find("\"worst_at\": [") + 13);
+  const double x = std::stod(place), y = std::stod(place.substr(place.find(',') + 1));
+  EXPECT_TRUE(x >= 0.0 && x <= 0.30 && y >= 0.0 && y <= 0.40) << place;
+}
+
+TEST(FailureModes, TheAddedMassInstabilityOfTheTrapezoidalRuleStopsTheCoupledRunNamingTheCoupling) {
+  // The paper's light plate with the trapezoidal rule and no interface added mass: the explicit exchange's
+  // added-mass instability (docs/stability.md: it fails at 0.016 s) stops the run as a coupling failure, with
+  // a checkpoint, before a NaN reaches probes.csv; with the acoustic added mass the same step is passed.
+  const std::string sets = "--set structure.newmark_gamma=0.5 --set structure.newmark_beta=0.25 --set scene.end_time=0.05";
+  const std::string out = test::binary_path("stability_added_mass");
+  ASSERT_EQ(test::run_scene(scene("plate_pulse"), out, sets + " --set coupling.added_mass=none"), 3);
+  const std::string summary = test::read_text(out + "/summary.json");
+  const std::string health = member(summary, "health");
+  EXPECT_NE(health.find("\"coupling_failure\": {"), std::string::npos) << health;
+  EXPECT_NE(summary.find("\"exit_status\": \"numerical_failure\""), std::string::npos);
+  EXPECT_EQ(io::list_checkpoints(out + "/checkpoints").size(), 1u);
+  const std::string probes = test::read_text(out + "/probes.csv");
+  EXPECT_EQ(probes.find("nan"), std::string::npos);
+  const std::string stable = test::binary_path("stability_added_mass_acoustic");
+  EXPECT_EQ(test::run_scene(scene("plate_pulse"), stable, sets + " --set scene.end_time=0.03"), 0)
+      << test::read_text(stable + ".stderr");
+}

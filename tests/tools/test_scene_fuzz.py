@@ -84,6 +84,8 @@ def main(argv):
     rng = random.Random(20261202)  # fixed: the same mutations on every run
     scenes = []
     for folder, _, files in os.walk(os.path.join(source, "inputs")):
+        if os.path.basename(folder) == "studies":
+            continue  # study files, not scenes (tools_study checks their refusals)
         scenes += [os.path.join(folder, f) for f in sorted(files) if f.endswith(".yaml")]
     findings, tried, valid = [], 0, 0
     for scene in sorted(scenes):

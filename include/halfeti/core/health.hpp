@@ -32,6 +32,10 @@ struct HealthEvent {
 
 using HealthLog = std::vector<HealthEvent>;
 
+// An event as a monitor raises it (its worst value not yet measured).
+HealthEvent health_event(double time, long long step, const std::string& kind, const std::string& message,
+                         bool fatal = false);
+
 // Whether a is worse than b for this kind: larger is worse, except for the kinds that measure a margin
 // (spacing_collapse: the closest pair in dx).
 bool health_worse(const std::string& kind, double a, double b);

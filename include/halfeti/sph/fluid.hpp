@@ -28,6 +28,9 @@
 
 namespace halfeti::sph {
 
+// c0: the scene's, or eq. 10's from the deepest water block and the peak ground acceleration (FluidParams).
+double resolved_sound_speed(const FluidParams& p);
+
 class Fluid {
  public:
   // Collective over comm (duplicated). motion may be null (still tank); it must outlive the Fluid.

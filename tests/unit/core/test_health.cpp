@@ -10,13 +10,7 @@ using namespace halfeti;
 
 namespace {
 HealthEvent event(const std::string& kind, double t, long long step, bool fatal = false) {
-  HealthEvent e;
-  e.kind = kind;
-  e.time = t;
-  e.step = step;
-  e.fatal = fatal;
-  e.message = kind + " at step " + std::to_string(step);
-  return e;
+  return health_event(t, step, kind, kind + " at step " + std::to_string(step), fatal);
 }
 }  // namespace
 

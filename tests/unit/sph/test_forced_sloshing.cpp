@@ -18,6 +18,7 @@
 #include <cstdio>
 
 #include "halfeti/excitation/ground_motion.hpp"
+#include "halfeti/io/metrics.hpp"
 #include "halfeti/sph/fluid.hpp"
 #include "linear_sloshing.hpp"
 #include "paper_tank.hpp"
@@ -32,21 +33,21 @@ TEST(ForcedSloshing, WallElevationFollowsLinearTheoryUnderASmallPulse) {
   const halfeti::test::LinearSloshing theory{L, d, p.gravity};
   const double xl = 0.5 * p.spacing, xr = L - 0.5 * p.spacing;  // the probes' columns, as the sloshing test's
 
-  double sum2 = 0.0, peak_lin = 0.0, peak_sph = 0.0, peak_even = 0.0;
-  long samples = 0;
+  // The odd part of the two walls' elevations (the first mode's), its even part, and linear theory's odd part, at
+  // every step; compared through the metrics' one home (io/metrics.hpp).
+  halfeti::io::Curve odd, even, lin;
   while (fluid.time() < T) {
     fluid.step();
     const double t = fluid.time();
     const double el = fluid.free_surface_elevation(xl) - d, er = fluid.free_surface_elevation(xr) - d;
-    const double odd = 0.5 * (el - er), even = 0.5 * (el + er);
-    const double lin = 0.5 * (theory.cosine_pulse_elevation(xl, t, A, T) - theory.cosine_pulse_elevation(xr, t, A, T));
-    sum2 += (odd - lin) * (odd - lin);
-    ++samples;
-    peak_lin = std::max(peak_lin, std::abs(lin));
-    peak_sph = std::max(peak_sph, std::abs(odd));
-    peak_even = std::max(peak_even, std::abs(even));
+    for (auto* c : {&odd, &even, &lin}) c->t.push_back(t);
+    odd.v.push_back(0.5 * (el - er));
+    even.v.push_back(0.5 * (el + er));
+    lin.v.push_back(0.5 * (theory.cosine_pulse_elevation(xl, t, A, T) - theory.cosine_pulse_elevation(xr, t, A, T)));
   }
-  const double rms = std::sqrt(sum2 / samples) / peak_lin, peak_err = (peak_sph - peak_lin) / peak_lin;
+  const double peak_lin = halfeti::io::peak(lin, {}, true).value, peak_sph = halfeti::io::peak(odd, {}, true).value;
+  const double peak_even = halfeti::io::peak(even, {}, true).value;
+  const double rms = halfeti::io::rms_error(odd, lin) / peak_lin, peak_err = (peak_sph - peak_lin) / peak_lin;
   const double k = M_PI / L, even_bound = 2.0 * k * peak_lin * peak_lin;
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);

@@ -97,35 +97,39 @@ TEST(Hooks, TwoParticlesMovedOntoOnePointKeepFiniteRates) {
 
 TEST(Hooks, CorrectionsDoNotPushParticlesIntoTheTankWalls) {
   // A correction that would carry a particle through the floor or a side wall (the contact at the plate's foot)
-  // stops at the nearer of its predicted distance and dx/2; its velocity correction into that wall is dropped,
-  // a correction along the wall is kept. A correction inside the tank is applied as given.
+  // stops at the nearer of its predicted distance and dx/2; a particle that ends within one spacing of a wall
+  // keeps no velocity correction into it (the wall takes that impulse), a correction along the wall or away from
+  // it is kept. A correction inside the tank is applied as given.
   const FluidParams p = small_tank();
   Fluid fluid(MPI_COMM_WORLD, p, nullptr);
   fluid.compute_forces();
   fluid.predict();
   const std::size_t n = fluid.owned_count();
-  ASSERT_GE(n, 3u);
+  ASSERT_GE(n, 4u);
   std::vector<double> dx(n, 0.0), dy(n, 0.0), dvx(n, 0.0), dvy(n, 0.0), drho(n, 0.0);
-  const double x0 = fluid.x()[0], y0 = fluid.y()[0], x1 = fluid.x()[1], y2 = fluid.y()[2];
+  const double x0 = fluid.x()[0], y0 = fluid.y()[0], x1 = fluid.x()[1], y2 = fluid.y()[2], y3 = fluid.y()[3];
   const double vx0 = fluid.vx()[0], vy0 = fluid.vy()[0], vx1 = fluid.vx()[1], vy2 = fluid.vy()[2];
+  const double vy3 = fluid.vy()[3];
   dy[0] = -(y0 + 0.01);  // through the floor
   const double along = x0 < 0.5 * p.tank_length ? 1e-4 : -1e-4;  // along the floor, towards the middle
   dx[0] = along;
-  dvx[0] = 0.3;
+  dvx[0] = along > 0 ? 0.3 : -0.3;  // along the floor, away from the nearer side wall
   dvy[0] = -2.0;
   dx[1] = p.tank_length - x1 + 0.01;  // through the right wall
   dvx[1] = 1.0;
-  dy[2] = 1e-4;  // inside
+  dy[2] = 1e-4;  // inside, moving up
   dvy[2] = 0.5;
-  fluid.apply_corrections({0, 1, 2}, dx.data(), dy.data(), dvx.data(), dvy.data(), drho.data());
+  dvy[3] = -0.5;  // down: dropped only if it ends within one spacing of the floor
+  fluid.apply_corrections({0, 1, 2, 3}, dx.data(), dy.data(), dvx.data(), dvy.data(), drho.data());
   EXPECT_DOUBLE_EQ(fluid.y()[0], std::min(y0, 0.5 * p.spacing));
   EXPECT_DOUBLE_EQ(fluid.x()[0], x0 + along);
   EXPECT_DOUBLE_EQ(fluid.vy()[0], vy0);
-  EXPECT_DOUBLE_EQ(fluid.vx()[0], vx0 + 0.3);
+  EXPECT_DOUBLE_EQ(fluid.vx()[0], vx0 + dvx[0]);
   EXPECT_DOUBLE_EQ(fluid.x()[1], p.tank_length - std::min(p.tank_length - x1, 0.5 * p.spacing));
   EXPECT_DOUBLE_EQ(fluid.vx()[1], vx1);
   EXPECT_DOUBLE_EQ(fluid.y()[2], y2 + 1e-4);
   EXPECT_DOUBLE_EQ(fluid.vy()[2], vy2 + 0.5);
+  EXPECT_DOUBLE_EQ(fluid.vy()[3], y3 < p.spacing ? vy3 : vy3 - 0.5);
   fluid.finish();
 }
 
