@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "halfeti/core/collective.hpp"
 #include "halfeti/core/error.hpp"
 
 namespace halfeti::coupling {
@@ -377,28 +378,16 @@ const CouplingStepReport& ContactCoupling::step(double t, double dt, const Inter
 
   // The structure's part runs on root; its outcome is broadcast so that every rank throws together.
   std::vector<InvaderCorrection> corrections;
-  int failed = 0;
-  std::string message;
-  if (rank_ == root_) {
+  // The root solves; its failure, named with the step, is raised on every rank together.
+  collective_outcome(comm_.get(), root_, rank_ == root_, [&] {
     try {
       corrections = solve_on_root(t, dt, last_.layer, gathered);
-    } catch (const Error& e) {
-      failed = e.kind() == ErrorKind::kNumerical ? 1 : 2;
+    } catch (const NumericalError& e) {
       std::ostringstream s;
-      s << "coupling step t = " << t << " -> " << t + dt << " s (" << gathered.size()
-        << " invaders): " << e.what();
-      message = s.str();
+      s << "coupling step t = " << t << " -> " << t + dt << " s (" << gathered.size() << " invaders): " << e.what();
+      throw NumericalError(s.str());
     }
-  }
-  MPI_Bcast(&failed, 1, MPI_INT, root_, comm_.get());
-  if (failed != 0) {
-    int length = static_cast<int>(message.size());
-    MPI_Bcast(&length, 1, MPI_INT, root_, comm_.get());
-    message.resize(static_cast<std::size_t>(length));
-    MPI_Bcast(message.data(), length, MPI_CHAR, root_, comm_.get());
-    if (failed == 1) throw NumericalError(message);
-    throw InternalError(message);
-  }
+  });
 
   {
     ScopedTimer timer(timers_, "handback");

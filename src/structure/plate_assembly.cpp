@@ -3,6 +3,7 @@
 #include <set>
 #include <sstream>
 
+#include "halfeti/core/collective.hpp"
 #include "halfeti/core/error.hpp"
 #include "halfeti/structure/plate_solver.hpp"
 
@@ -224,18 +225,8 @@ void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& n
         stiffness_coefficient * ne_tangent;
     nodal_sink(dofs, values.data());
   }
-  if (size_ > 1) {
-    // The first failing rank's message, on every rank.
-    const int mine = failure.empty() ? size_ : rank_;
-    int first = size_;
-    MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, comm_.get());
-    if (first < size_) {
-      int length = static_cast<int>(failure.size());
-      MPI_Bcast(&length, 1, MPI_INT, first, comm_.get());
-      failure.resize(static_cast<std::size_t>(length));
-      MPI_Bcast(failure.data(), length, MPI_CHAR, first, comm_.get());
-    }
-  }
+  // The first failing rank's message, on every rank.
+  if (size_ > 1) failure = first_problem(comm_.get(), !failure.empty(), rank_, failure);
   if (!failure.empty()) throw NumericalError(failure);
   if (size_ > 1) {
     // Reduce to rank 0 and broadcast, so that every rank holds bitwise the same residual and takes the same

@@ -16,6 +16,11 @@ namespace detail {
 [[noreturn]] void raise_shared(int kind, const std::string& message);
 }  // namespace detail
 
+// Collective: among the ranks with has_problem, the message of the one with the smallest `key` (a particle's
+// global id, a rank) on every rank; empty when no rank has one. For checks that any rank may fail (the fluid's
+// monitors, the plate's element loop).
+std::string first_problem(MPI_Comm comm, bool has_problem, long key, const std::string& message);
+
 // The root must be among the participants (its outcome is the one shared).
 template <class Work>
 void collective_outcome(MPI_Comm comm, int root, bool participate, Work&& work) {

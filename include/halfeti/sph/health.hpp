@@ -8,14 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "halfeti/core/collective.hpp"
 #include "halfeti/core/health.hpp"
 
 namespace halfeti::sph {
 
 using HealthEvent = halfeti::HealthEvent;  // one record for every part's monitors (core/health.hpp)
 
-// Collective: among the ranks with has_problem, the message of the one with the smallest `key` (e.g. particle
-// gid) is returned on every rank; empty when no rank has one.
-std::string first_problem(MPI_Comm comm, bool has_problem, long key, const std::string& message);
+using halfeti::first_problem;  // the lowest-key problem on every rank (core/collective.hpp)
 
 }  // namespace halfeti::sph

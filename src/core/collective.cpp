@@ -1,8 +1,8 @@
-#include "halfeti/sph/health.hpp"
+#include "halfeti/core/collective.hpp"
 
 #include <climits>
 
-namespace halfeti::sph {
+namespace halfeti {
 
 std::string first_problem(MPI_Comm comm, bool has_problem, long key, const std::string& message) {
   long local = has_problem ? key : LONG_MAX;
@@ -20,4 +20,4 @@ std::string first_problem(MPI_Comm comm, bool has_problem, long key, const std::
   return out;
 }
 
-}  // namespace halfeti::sph
+}  // namespace halfeti
