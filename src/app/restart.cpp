@@ -1,7 +1,6 @@
 #include "halfeti/app/restart.hpp"
 
 #include <dirent.h>
-#include <sys/stat.h>
 #include <yaml-cpp/yaml.h>
 
 #include <cerrno>
@@ -14,6 +13,7 @@
 #include <sstream>
 
 #include "halfeti/core/error.hpp"
+#include "halfeti/core/files.hpp"
 
 namespace halfeti::app {
 
@@ -41,20 +41,6 @@ bool may_change(const std::string& key) {
   return key == "scene.end_time" || key == "scene.description" || key.rfind("output.", 0) == 0;
 }
 
-std::string directory_part(const std::string& path) {
-  const auto p = path.find_last_of('/');
-  return p == std::string::npos ? std::string(".") : path.substr(0, p);
-}
-
-std::string base_part(const std::string& path) {
-  const auto p = path.find_last_of('/');
-  return p == std::string::npos ? path : path.substr(p + 1);
-}
-
-bool exists(const std::string& p) {
-  struct stat st {};
-  return ::stat(p.c_str(), &st) == 0;
-}
 
 }  // namespace
 
@@ -93,7 +79,7 @@ std::vector<std::string> decode_lines(const std::string& text) {
 std::vector<std::string> run_outputs(const std::string& dir) {
   std::vector<std::string> out;
   for (const char* f : {"summary.json", "probes.csv", "log.txt", "scene.resolved.yaml"})
-    if (exists(dir + "/" + f)) out.push_back(dir + "/" + f);
+    if (path_exists(dir + "/" + f)) out.push_back(dir + "/" + f);
   for (const char* sub : {"fields", "checkpoints"}) {
     DIR* d = ::opendir((dir + "/" + sub).c_str());
     if (d == nullptr) continue;
@@ -126,8 +112,8 @@ std::vector<std::string> probe_rows_until(const std::string& path, const std::st
 }
 
 std::string run_folder_of(const std::string& checkpoint) {
-  const std::string dir = directory_part(checkpoint);
-  return base_part(dir) == "checkpoints" ? directory_part(dir) : dir;
+  const std::string dir = directory_of(checkpoint);
+  return base_name(dir) == "checkpoints" ? directory_of(dir) : dir;
 }
 
 bool same_folder(const std::string& a, const std::string& b) {

@@ -18,6 +18,7 @@
 #include "halfeti/app/run_size.hpp"
 #include "halfeti/core/collective.hpp"
 #include "halfeti/core/error.hpp"
+#include "halfeti/core/files.hpp"
 #include "halfeti/core/version.hpp"
 #include "halfeti/excitation/excitation_scene.hpp"
 #include "halfeti/io/checkpoint.hpp"
@@ -27,10 +28,6 @@ namespace halfeti::app {
 
 namespace {
 
-std::string directory_of(const std::string& file) {
-  const auto p = file.find_last_of('/');
-  return p == std::string::npos ? std::string(".") : file.substr(0, p);
-}
 
 
 // The largest |a_g| over the run, sampled finely enough for records (0.02 s) and pulses.

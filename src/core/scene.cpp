@@ -1,6 +1,5 @@
 #include "halfeti/core/scene.hpp"
 
-#include <sys/stat.h>
 
 #include <algorithm>
 
@@ -8,6 +7,7 @@
 #include <sstream>
 
 #include "halfeti/core/error.hpp"
+#include "halfeti/core/files.hpp"
 
 namespace halfeti::scene {
 
@@ -109,8 +109,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   std::string payload;
   if (rank == 0) {
     try {
-      struct stat st {};
-      if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+      if (is_directory(path))
         HALFETI_USER_ERROR("scene file '" << path << "' is a folder; give the scene's .yaml file");
       std::ifstream in(path);
       if (!in) HALFETI_USER_ERROR("cannot open scene file '" << path << "': no such file or not readable");

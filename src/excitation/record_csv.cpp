@@ -1,11 +1,11 @@
 // Reading accelerogram CSV files (e.g. inputs/records/elcentro_ns.csv).
 #include <cmath>
-#include <sys/stat.h>
 
 #include <fstream>
 #include <sstream>
 
 #include "halfeti/core/error.hpp"
+#include "halfeti/core/files.hpp"
 #include "halfeti/excitation/ground_motion.hpp"
 
 namespace halfeti::excitation {
@@ -16,8 +16,7 @@ constexpr double kStandardGravity = 9.80665;
 
 std::unique_ptr<GroundMotion> read_record_csv(const std::string& path, const std::string& units, double scale,
                                               double start, double end, double time_shift) {
-  struct stat st {};
-  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+  if (is_directory(path))
     HALFETI_USER_ERROR("accelerogram '" << path << "' is a folder, not a record file");
   std::ifstream in(path);
   if (!in) HALFETI_USER_ERROR("cannot open accelerogram '" << path << "': no such file or not readable");

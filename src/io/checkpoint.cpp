@@ -1,7 +1,6 @@
 #include "halfeti/io/checkpoint.hpp"
 
 #include <dirent.h>
-#include <sys/stat.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -9,6 +8,7 @@
 #include <cstring>
 
 #include "halfeti/core/error.hpp"
+#include "halfeti/core/files.hpp"
 #include "halfeti/io/fields.hpp"
 #include "hdf5_file.hpp"
 
@@ -19,15 +19,6 @@ namespace {
 constexpr double kFormat = 1.0;  // the layout below; a reader refuses another
 constexpr const char* kPrefix = "checkpoint_";
 
-bool is_directory(const std::string& p) {
-  struct stat st {};
-  return ::stat(p.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
-}
-
-bool is_file(const std::string& p) {
-  struct stat st {};
-  return ::stat(p.c_str(), &st) == 0 && S_ISREG(st.st_mode);
-}
 
 // Rank 0's names and sizes, known to every rank (datasets are created collectively).
 template <class Map>
@@ -122,7 +113,7 @@ Checkpoint read_checkpoint(const std::string& path) {
   using h5::Id;
   using h5::Use;
   h5::quiet();
-  if (!is_file(path)) HALFETI_USER_ERROR("restart: no checkpoint file '" << path << "'");
+  if (!is_regular_file(path)) HALFETI_USER_ERROR("restart: no checkpoint file '" << path << "'");
   Id file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, Use::kRead, "open '" + path + "'");
   if (H5Aexists(file, "halfeti_checkpoint") <= 0)
     HALFETI_USER_ERROR("restart: '" << path << "' is not a halfeti checkpoint (a field file?)");
@@ -182,7 +173,7 @@ std::vector<std::string> list_checkpoints(const std::string& dir) {
 }
 
 std::string resolve_checkpoint(const std::string& path) {
-  if (is_file(path)) return path;
+  if (is_regular_file(path)) return path;
   if (!is_directory(path)) HALFETI_USER_ERROR("restart: '" << path << "' is neither a checkpoint nor a folder");
   for (const std::string& dir : {path + "/checkpoints", path}) {
     const auto all = list_checkpoints(dir);

@@ -1,6 +1,5 @@
 #include "halfeti/io/compare_tool.hpp"
 
-#include <sys/stat.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -8,6 +7,7 @@
 #include <optional>
 
 #include "halfeti/core/error.hpp"
+#include "halfeti/core/files.hpp"
 #include "halfeti/io/json.hpp"
 #include "halfeti/io/metrics.hpp"
 #include "halfeti/io/probe_writer.hpp"
@@ -97,9 +97,8 @@ int run_compare_tool(const std::vector<std::string>& args, std::ostream& out) {
   if (!reference.empty() && reference_value)
     HALFETI_USER_ERROR("compare: give --reference FILE or --reference-value X, not both");
 
-  struct stat st {};
-  const std::string csv = stat(run.c_str(), &st) == 0 && S_ISDIR(st.st_mode) ? run + "/probes.csv" : run;
-  if (stat(csv.c_str(), &st) != 0) HALFETI_USER_ERROR("compare: no probes file '" << csv << "'");
+  const std::string csv = is_directory(run) ? run + "/probes.csv" : run;
+  if (!path_exists(csv)) HALFETI_USER_ERROR("compare: no probes file '" << csv << "'");
   const ProbeTable table = read_probe_csv(csv);
   bool known = false;
   for (const auto& n : table.names) known = known || n == probe;

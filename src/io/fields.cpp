@@ -11,6 +11,7 @@
 
 #include "halfeti/core/collective.hpp"
 #include "halfeti/core/error.hpp"
+#include "halfeti/core/files.hpp"
 #include "hdf5_file.hpp"
 
 namespace halfeti::io {
@@ -97,8 +98,7 @@ void FieldSeries::resume(double time) {
       char buf[32];
       std::snprintf(buf, sizeof buf, "_%06d.h5", k);
       const std::string file_name = name_ + buf, path = dir_ + "/" + file_name;
-      struct stat st {};
-      if (::stat(path.c_str(), &st) != 0) break;
+      if (!path_exists(path)) break;
       if (static_cast<int>(frames_.size()) == k) {
         const FieldFrameData d = read_field_file(path);
         if (d.time <= time * (1.0 + 1e-12) + 1e-300) {

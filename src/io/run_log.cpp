@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "halfeti/core/error.hpp"
+#include "halfeti/core/files.hpp"
 
 namespace halfeti::io {
 
@@ -76,8 +77,7 @@ void make_directories(const std::string& path) {
     if (::mkdir(partial.c_str(), 0755) != 0 && errno != EEXIST)
       HALFETI_USER_ERROR("cannot create directory '" << partial << "': " << std::strerror(errno));
   }
-  struct stat st{};
-  if (::stat(path.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
+  if (!is_directory(path))
     HALFETI_USER_ERROR("'" << path << "' exists and is not a directory");
 }
 
