@@ -4,15 +4,23 @@
 
 namespace halfeti {
 
-std::string first_problem(MPI_Comm comm, bool has_problem, long key, const std::string& message) {
-  long local = has_problem ? key : LONG_MAX;
+int first_rank(MPI_Comm comm, bool has, long key) {
+  long local = has ? key : LONG_MAX;
   long best = LONG_MAX;
   MPI_Allreduce(&local, &best, 1, MPI_LONG, MPI_MIN, comm);
-  if (best == LONG_MAX) return {};
+  if (best == LONG_MAX) return -1;
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
-  int mine = (has_problem && key == best) ? rank : INT_MAX, root = INT_MAX;
+  int mine = (has && key == best) ? rank : INT_MAX, root = INT_MAX;
   MPI_Allreduce(&mine, &root, 1, MPI_INT, MPI_MIN, comm);
+  return root;
+}
+
+std::string first_problem(MPI_Comm comm, bool has_problem, long key, const std::string& message) {
+  const int root = first_rank(comm, has_problem, key);
+  if (root < 0) return {};
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
   int len = rank == root ? static_cast<int>(message.size()) : 0;
   MPI_Bcast(&len, 1, MPI_INT, root, comm);
   std::string out(rank == root ? message : std::string(len, ' '));

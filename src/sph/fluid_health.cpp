@@ -34,15 +34,10 @@ void Fluid::warn(const std::string& kind, bool active, bool cleared, const std::
   } else if (cleared && it != active_warnings_.end()) {
     active_warnings_.erase(it);
   }
-  if (!active) return;
-  for (auto e = events_.rbegin(); e != events_.rend(); ++e)
-    if (e->kind == kind && !e->fatal) {
-      health_observe(*e, value, time_, step_, x, y);
-      break;
-    }
+  if (HealthEvent* open = active ? open_warning(kind) : nullptr) health_observe(*open, value, time_, step_, x, y);
 }
 
-const HealthEvent* Fluid::open_warning(const std::string& kind) const {
+HealthEvent* Fluid::open_warning(const std::string& kind) {
   if (std::find(active_warnings_.begin(), active_warnings_.end(), kind) == active_warnings_.end()) return nullptr;
   for (auto e = events_.rbegin(); e != events_.rend(); ++e)
     if (e->kind == kind && !e->fatal) return &*e;
@@ -92,17 +87,11 @@ void Fluid::remove_spilled() {
        << first << "); removed, " << spilled_mass_ << " kg/m spilled so far";
   // Worst: the water spilled so far [kg/m]; place: where the first particle over the top (lowest id) was.
   double place[2] = {first_x, first_y};
-  if (sums[0] > 0) {
-    long lowest = key;
-    MPI_Allreduce(&key, &lowest, 1, MPI_LONG, MPI_MIN, comm_.get());
-    int mine = removed > 0 && key == lowest ? rank_ : size_, root = size_;
-    MPI_Allreduce(&mine, &root, 1, MPI_INT, MPI_MIN, comm_.get());
-    MPI_Bcast(place, 2, MPI_DOUBLE, root, comm_.get());
-  }
+  if (sums[0] > 0) MPI_Bcast(place, 2, MPI_DOUBLE, first_rank(comm_.get(), removed > 0, key), comm_.get());
   // One episode while water keeps leaving: it ends after 0.05 s without a spill (a sloshing wave throws its crest
   // over the top particle by particle, over a few steps each).
   constexpr double kQuiet = 0.05;  // [s]
-  const HealthEvent* open = open_warning("spilled");
+  const HealthEvent* open = open_warning("spilled");  // before warn() opens or closes one
   const bool quiet = sums[0] == 0 && (!open || time_ - open->worst_time > kQuiet);
   warn("spilled", sums[0] > 0, quiet, os.str(), spilled_mass_, place[0], place[1]);
 }
@@ -193,16 +182,12 @@ void Fluid::check_health() {
     os << at << "two particles came within " << dmin << " m (" << dmin / dx_
        << " dx): spacing collapse, tensile instability (keep the tensile correction on)";
     const int i = closest_pair_particle(dmin);
-    struct {
-      double v;
-      int r;
-    } mine{i >= 0 ? 0.0 : 1.0, rank_}, lowest{0.0, 0};
-    MPI_Allreduce(&mine, &lowest, 1, MPI_DOUBLE_INT, MPI_MINLOC, comm_.get());
     if (i >= 0) {
       place[0] = x_[i];
       place[1] = y_[i];
     }
-    MPI_Bcast(place, 2, MPI_DOUBLE, lowest.r, comm_.get());
+    const int root = first_rank(comm_.get(), i >= 0, 0);
+    MPI_Bcast(place, 2, MPI_DOUBLE, root < 0 ? 0 : root, comm_.get());
   }
   warn("spacing_collapse", collapsed, dmin > 1.5 * params_.spacing_collapse_fraction * dx_, os.str(), dmin / dx_,
        place[0], place[1]);

@@ -20,6 +20,8 @@ namespace detail {
 // global id, a rank) on every rank; empty when no rank has one. For checks that any rank may fail (the fluid's
 // monitors, the plate's element loop).
 std::string first_problem(MPI_Comm comm, bool has_problem, long key, const std::string& message);
+// Collective: the lowest rank among those with `has` and the smallest `key`; -1 when no rank has.
+int first_rank(MPI_Comm comm, bool has, long key);
 
 // The root must be among the participants (its outcome is the one shared).
 template <class Work>

@@ -141,7 +141,7 @@ class Fluid {
             double x = 0.0, double y = 0.0);
   [[noreturn]] void fatal(const std::string& kind, const std::string& message);
   int closest_pair_particle(double dmin) const;
-  const HealthEvent* open_warning(const std::string& kind) const;  // the episode of `kind` under way, or null
+  HealthEvent* open_warning(const std::string& kind);  // the episode of `kind` under way, or null
 
   Communicator comm_;
   int rank_ = 0, size_ = 1;
