@@ -40,26 +40,28 @@ double from_structure_rank(const Parts& parts, double value_on_structure_rank) {
 }
 
 template <class Read>
-ProbeFactory structure_probe(Read read) {
-  return [read](const scene::Node& p, Parts& parts) {
+ProbeFactory structure_probe(Read read, std::string unit) {
+  return [read, unit](const scene::Node& p, Parts& parts) {
     parts.require_structure(p.path());
     const Parts* owner = &parts;
-    return ProbeColumn{p.string("name"), [owner, read](double) {
+    return ProbeColumn{p.string("name"),
+                       [owner, read](double) {
                          return from_structure_rank(*owner, owner->plate ? read(*owner->plate) : 0.0);
-                       }};
+                       },
+                       unit};
   };
 }
 
 // A water probe read along the vertical line at `x` (inside the tank).
 template <class Read>
-ProbeFactory at_x(Read read) {
-  return [read](const scene::Node& p, Parts& parts) {
+ProbeFactory at_x(Read read, std::string unit) {
+  return [read, unit](const scene::Node& p, Parts& parts) {
     const auto& f = parts.require_fluid(p.path());
     const double x = p.real("x");
     if (x > f.tank_length)
       HALFETI_USER_ERROR(p.key_path("x") << ": " << x << " lies outside the tank [0, " << f.tank_length << "]");
     const Parts* owner = &parts;
-    return ProbeColumn{p.string("name"), [owner, read, x](double) { return read(*owner->fluid, x); }};
+    return ProbeColumn{p.string("name"), [owner, read, x](double) { return read(*owner->fluid, x); }, unit};
   };
 }
 
@@ -87,11 +89,11 @@ std::array<double, 2> point_in_tank(const scene::Node& p, const Parts& parts) {
 }
 
 template <class Read>
-ProbeFactory fluid_probe(Read read) {
-  return [read](const scene::Node& p, Parts& parts) {
+ProbeFactory fluid_probe(Read read, std::string unit) {
+  return [read, unit](const scene::Node& p, Parts& parts) {
     parts.require_fluid(p.path());
     const Parts* owner = &parts;
-    return ProbeColumn{p.string("name"), [owner, read](double) { return read(*owner->fluid); }};
+    return ProbeColumn{p.string("name"), [owner, read](double) { return read(*owner->fluid); }, unit};
   };
 }
 
@@ -100,13 +102,14 @@ Registry<ProbeFactory> build_registry() {
   r.add("ground_acceleration", "the tank's horizontal ground acceleration a_g(t) [m/s^2]", keys({}),
         [](const scene::Node& p, Parts& parts) {
           const Parts* owner = &parts;
-          return ProbeColumn{p.string("name"), [owner](double t) { return owner->motion->acceleration(t); }};
+          return ProbeColumn{p.string("name"), [owner](double t) { return owner->motion->acceleration(t); }, "m/s^2"};
         });
   r.add("pressure", "water pressure at a point: Shepard-normalised kernel sum over fluid particles [Pa]",
         keys({Key::point("at", "where", "m").required()}), [](const scene::Node& p, Parts& parts) {
           const auto at = point_in_tank(p, parts);
           const Parts* owner = &parts;
-          return ProbeColumn{p.string("name"), [owner, at](double) { return owner->fluid->pressure_at(at[0], at[1]); }};
+          return ProbeColumn{p.string("name"), [owner, at](double) { return owner->fluid->pressure_at(at[0], at[1]); },
+                             "Pa"};
         });
   r.add("velocity", "one component of the water velocity at a point [m/s]",
         keys({Key::point("at", "where", "m").required(),
@@ -116,32 +119,33 @@ Registry<ProbeFactory> build_registry() {
           const int c = p.string("component") == "x" ? 0 : 1;
           const Parts* owner = &parts;
           return ProbeColumn{p.string("name"),
-                             [owner, at, c](double) { return owner->fluid->velocity_at(at[0], at[1])[c]; }};
+                             [owner, at, c](double) { return owner->fluid->velocity_at(at[0], at[1])[c]; }, "m/s"};
         });
   r.add("elevation", "free-surface elevation at x: top fluid particle within dx of x, plus dx/2 (follows run-up jets) [m]",
         keys({Key::real("x", "where", "m").required().non_negative()}),
-        at_x([](const sph::Fluid& f, double x) { return f.free_surface_elevation(x); }));
+        at_x([](const sph::Fluid& f, double x) { return f.free_surface_elevation(x); }, "m"));
   r.add("surface_level",
         "the bulk's free surface at x: where the water's kernel-interpolated volume fraction falls below 1/2, upward "
         "from the floor (run-up jets and spray above a gap not counted) [m]",
         keys({Key::real("x", "where", "m").required().non_negative()}),
-        at_x([](const sph::Fluid& f, double x) { return f.surface_level(x); }));
+        at_x([](const sph::Fluid& f, double x) { return f.surface_level(x); }, "m"));
   r.add("front", "surge front: largest x of the water below a height, plus dx/2 [m]",
         keys({Key::real("below", "only particles below this height count", "m").required().positive()}),
         [](const scene::Node& p, Parts& parts) {
           parts.require_fluid(p.path());
           const double below = p.real("below");
           const Parts* owner = &parts;
-          return ProbeColumn{p.string("name"), [owner, below](double) { return owner->fluid->front_position(below); }};
+          return ProbeColumn{p.string("name"), [owner, below](double) { return owner->fluid->front_position(below); },
+                             "m"};
         });
   r.add("total_mass", "mass of the water per unit depth [kg/m]", keys({}),
-        fluid_probe([](const sph::Fluid& f) { return f.total_mass(); }));
+        fluid_probe([](const sph::Fluid& f) { return f.total_mass(); }, "kg/m"));
   r.add("kinetic_energy", "kinetic energy of the water per unit depth [J/m]", keys({}),
-        fluid_probe([](const sph::Fluid& f) { return f.kinetic_energy(); }));
+        fluid_probe([](const sph::Fluid& f) { return f.kinetic_energy(); }, "J/m"));
   r.add("max_density_variation", "max |rho - rho0| / rho0 over the water [-]", keys({}),
-        fluid_probe([](const sph::Fluid& f) { return f.max_density_variation(); }));
+        fluid_probe([](const sph::Fluid& f) { return f.max_density_variation(); }, "-"));
   r.add("min_spacing", "closest pair of water particles at the last neighbour search, in dx [-] (clumping)",
-        keys({}), fluid_probe([](const sph::Fluid& f) { return f.min_spacing(); }));
+        keys({}), fluid_probe([](const sph::Fluid& f) { return f.min_spacing(); }, "dx"));
   r.add("displacement", "displacement of a named plate node [m]",
         keys({Key::string("node", "top_left, top_centre, top_right, ... (hanging plate: bottom_left, bottom_centre, ...)").required(),
               Key::choice("component", "which component", {"x", "y"}).required()}),
@@ -155,16 +159,17 @@ Registry<ProbeFactory> build_registry() {
           const Parts* owner = &parts;
           return ProbeColumn{p.string("name"), [owner, id, c](double) {
                                return from_structure_rank(*owner, owner->plate ? owner->plate->displacement(id)[c] : 0.0);
-                             }};
+                             },
+                             "m"};
         });
   r.add("strain_energy", "strain energy of the plate per unit depth [J/m]", keys({}),
-        structure_probe([](const structure::PlateSolver& s) { return s.strain_energy(); }));
+        structure_probe([](const structure::PlateSolver& s) { return s.strain_energy(); }, "J/m"));
   r.add("structure_kinetic_energy", "kinetic energy of the plate per unit depth [J/m]", keys({}),
-        structure_probe([](const structure::PlateSolver& s) { return s.kinetic_energy(); }));
+        structure_probe([](const structure::PlateSolver& s) { return s.kinetic_energy(); }, "J/m"));
   r.add("structure_potential_energy", "the plate's potential energy in gravity from its reference shape [J/m]",
-        keys({}), structure_probe([](const structure::PlateSolver& s) { return s.gravity_potential_energy(); }));
+        keys({}), structure_probe([](const structure::PlateSolver& s) { return s.gravity_potential_energy(); }, "J/m"));
   r.add("max_von_mises", "largest von Mises (Cauchy) stress in the plate [Pa]", keys({}),
-        structure_probe([](const structure::PlateSolver& s) { return s.max_von_mises(); }));
+        structure_probe([](const structure::PlateSolver& s) { return s.max_von_mises(); }, "Pa"));
   r.add("plate_load",
         "the water's force on the plate over the last step, by part, face and sign (docs/coupling.md, section 15) [N/m]",
         keys({Key::choice("part", "plate-wall ghosts, contact, or both", {"wall", "contact", "all"}).def("all"),
@@ -194,7 +199,8 @@ Registry<ProbeFactory> build_registry() {
                                  if (contact) v += b.contact[k][c];
                                }
                                return v;
-                             }};
+                             },
+                             "N/m"};
         });
   r.add("plate_load_work",
         "the water's work on the plate since the start (docs/coupling.md, section 15) [J/m]",
@@ -211,7 +217,8 @@ Registry<ProbeFactory> build_registry() {
                                if (part == "added_mass") return b.work_added_mass;
                                if (part == "contact") return b.work_contact;
                                return b.work_wall + b.work_added_mass + b.work_contact;
-                             }};
+                             },
+                             "J/m"};
         });
   r.add("cable_tension", "tension of one real cable of a set, at one end: stress [Pa] or force [N]",
         keys({Key::string("cable", "cable name").required(),
@@ -230,7 +237,8 @@ Registry<ProbeFactory> build_registry() {
                                  v = stress ? cable::tension_stress(set, t) : cable::tension_per_cable(set, t);
                                }
                                return from_structure_rank(*owner, v);
-                             }};
+                             },
+                             stress ? "Pa" : "N"};
         });
   r.add("cable_slack", "1 when the cable's chord is shorter than its unstretched length, else 0 [-]",
         keys({Key::string("cable", "cable name").required()}), [](const scene::Node& p, Parts& parts) {
@@ -240,7 +248,8 @@ Registry<ProbeFactory> build_registry() {
                                const bool slack = owner->structure_rank &&
                                                   owner->cables[i]->last_solution().state == cable::CableState::kSlack;
                                return from_structure_rank(*owner, slack ? 1.0 : 0.0);
-                             }};
+                             },
+                             "-"};
         });
   r.add("cable_chord", "distance between the cable's two ends [m]",
         keys({Key::string("cable", "cable name").required()}), [](const scene::Node& p, Parts& parts) {
@@ -249,7 +258,8 @@ Registry<ProbeFactory> build_registry() {
           return ProbeColumn{p.string("name"), [owner, i](double) {
                                return from_structure_rank(*owner,
                                                           owner->structure_rank ? owner->cables[i]->last_solution().chord : 0.0);
-                             }};
+                             },
+                             "m"};
         });
   return r;
 }
@@ -282,6 +292,8 @@ std::vector<ProbeColumn> make_probes(const scene::Node& root, Parts& parts) {
     if (name == "t") HALFETI_USER_ERROR(p.key_path("name") << ": 't' is the time column; choose another name");
     if (!names.insert(name).second) HALFETI_USER_ERROR(p.key_path("name") << ": probe name '" << name << "' used twice");
     out.push_back(probe_registry().get(p.string("kind")).make(p, parts));
+    out.back().kind = p.string("kind");
+    HALFETI_CHECK(!out.back().unit.empty(), "probe kind '" << out.back().kind << "' states no unit");
   }
   return out;
 }

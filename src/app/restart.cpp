@@ -78,7 +78,7 @@ std::vector<std::string> decode_lines(const std::string& text) {
 
 std::vector<std::string> run_outputs(const std::string& dir) {
   std::vector<std::string> out;
-  for (const char* f : {"summary.json", "probes.csv", "log.txt", "scene.resolved.yaml"})
+  for (const char* f : {"summary.json", "probes.csv", "probes.json", "log.txt", "scene.resolved.yaml"})
     if (path_exists(dir + "/" + f)) out.push_back(dir + "/" + f);
   for (const char* sub : {"fields", "checkpoints"}) {
     DIR* d = ::opendir((dir + "/" + sub).c_str());

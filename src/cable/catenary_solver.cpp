@@ -258,4 +258,27 @@ CatenarySolution solve_catenary(const Eigen::Vector2d& end1, const Eigen::Vector
   return sol;
 }
 
+std::vector<CurvePoint> catenary_curve(const Eigen::Vector2d& end1, const Eigen::Vector2d& end2,
+                                       const CableProperties& cable, const CatenarySolution& solution,
+                                       int segments) {
+  HALFETI_CHECK(segments >= 1, "a cable's curve needs at least one segment (" << segments << ")");
+  std::vector<CurvePoint> out(static_cast<std::size_t>(segments) + 1);
+  const SolverFrame frame = make_frame(end2 - end1, cable);
+  const double l0 = cable.unstretched_length;
+  // End 1's tension in the solver's frame; along the cable it is (Tx, Ty + w s0) there (eq. 14).
+  const Eigen::Vector2d t0 = frame.axes.transpose() * solution.end_tension;
+  for (int k = 0; k <= segments; ++k) {
+    const double s0 = l0 * k / segments;
+    CurvePoint& p = out[static_cast<std::size_t>(k)];
+    if (frame.load == 0.0 || !solution.carries_load) {
+      p.position = end1 + (end2 - end1) * (static_cast<double>(k) / segments);
+      p.tension = solution.carries_load ? solution.tension_start : 0.0;
+    } else {
+      p.position = end1 + frame.axes * catenary_point(t0.x(), t0.y(), s0, cable.axial_stiffness, frame.load);
+      p.tension = std::hypot(t0.x(), t0.y() + frame.load * s0);
+    }
+  }
+  return out;
+}
+
 }  // namespace halfeti::cable

@@ -18,6 +18,7 @@ namespace halfeti::io {
 
 namespace {
 
+const char* center_name(Center c) { return c == Center::kCell ? "cell" : "node"; }
 
 }  // namespace
 
@@ -32,7 +33,7 @@ FieldSeries::FieldSeries(MPI_Comm comm, std::string dir, std::string name)
 }
 
 std::string FieldSeries::write(double time, std::size_t n_local, const double* x, const double* y,
-                               const std::vector<PointField>& fields, const CellBlock* cells) {
+                               const std::vector<Field>& fields, const CellBlock* cells) {
   using h5::Id;
   using h5::Use;
   char buf[32];
@@ -58,16 +59,26 @@ std::string FieldSeries::write(double time, std::size_t n_local, const double* x
     h5::write_slab(file, "y", H5T_NATIVE_DOUBLE, y, offset[0], local[0], total[0], partial);
     for (const auto& f : fields) {
       HALFETI_CHECK(f.name != "x" && f.name != "y" && f.name != "cells", "field name '" << f.name << "' is reserved");
-      h5::write_slab(file, f.name, H5T_NATIVE_DOUBLE, f.values, offset[0], local[0], total[0], partial);
-      frame.fields.push_back(f.name);
+      HALFETI_CHECK(!f.is_integer || f.components == 1, "integer field '" << f.name << "' has one component");
+      HALFETI_CHECK(f.components == 1 || f.components == 3, "field '" << f.name << "': 1 or 3 components");
+      HALFETI_CHECK(f.center == Center::kNode || cells, "cell field '" << f.name << "' without cells");
+      const int row = f.center == Center::kCell ? 1 : 0;
+      if (f.is_integer)
+        h5::write_slab(file, f.name, H5T_NATIVE_INT64, f.integer, offset[row], local[row], total[row], partial);
+      else
+        h5::write_slab(file, f.name, H5T_NATIVE_DOUBLE, f.real, offset[row], local[row], total[row], partial,
+                       f.components);
+      h5::write_dataset_attribute(file, f.name, "unit", f.unit, partial);
+      h5::write_dataset_attribute(file, f.name, "center", center_name(f.center), partial);
+      frame.fields.push_back({f.name, f.unit, f.components, f.center, f.is_integer});
     }
     std::string order;  // the fields in their order of writing, for readers (HDF5 lists them by name)
-    for (const auto& n : frame.fields) order += (order.empty() ? "" : ",") + n;
+    for (const auto& n : frame.fields) order += (order.empty() ? "" : ",") + n.name;
     h5::write_attribute(file, "fields", order, partial);
     if (cells) {
       const long long npc = cells->nodes_per_cell;
-      h5::write_slab(file, "cells", H5T_NATIVE_INT64, cells->connectivity, offset[1] * npc, local[1] * npc,
-                     total[1] * npc, partial);
+      h5::write_slab(file, "cells", H5T_NATIVE_INT64, cells->connectivity, offset[1], local[1], total[1], partial,
+                     static_cast<int>(npc));  // one row per cell, as the XDMF states it
       frame.n_cells = total[1];
       frame.topology = cells->xdmf_topology;
       frame.nodes_per_cell = cells->nodes_per_cell;
@@ -102,7 +113,9 @@ void FieldSeries::resume(double time) {
       if (static_cast<int>(frames_.size()) == k) {
         const FieldFrameData d = read_field_file(path);
         if (d.time <= time * (1.0 + 1e-12) + 1e-300) {
-          Frame f{d.time, file_name, static_cast<long long>(d.x.size()), 0, d.names, "Polyvertex", 1};
+          Frame f{d.time, file_name, static_cast<long long>(d.x.size()), 0, {}, "Polyvertex", 1};
+          for (std::size_t k = 0; k < d.names.size(); ++k)
+            f.fields.push_back({d.names[k], d.info[k].unit, d.info[k].components, d.info[k].center, d.info[k].integer});
           if (!d.cells.empty()) {
             f.topology = d.topology;
             f.nodes_per_cell = d.nodes_per_cell;
@@ -151,9 +164,15 @@ void FieldSeries::write_xdmf() const {
       item("x", f.n_points, "Float", 8);
       item("y", f.n_points, "Float", 8);
       out << "    </Geometry>\n";
-      for (const auto& n : f.fields) {
-        out << "    <Attribute Name=\"" << n << "\" AttributeType=\"Scalar\" Center=\"Node\">\n";
-        item(n, f.n_points, "Float", 8);
+      for (const auto& a : f.fields) {
+        const long long rows = a.center == Center::kCell ? f.n_cells : f.n_points;
+        out << "    <Attribute Name=\"" << a.name << "\" AttributeType=\"" << (a.components == 3 ? "Vector" : "Scalar")
+            << "\" Center=\"" << (a.center == Center::kCell ? "Cell" : "Node") << "\">\n";
+        if (!a.unit.empty()) out << "     <Information Name=\"unit\" Value=\"" << a.unit << "\"/>\n";
+        out << "     <DataItem Dimensions=\"" << rows;
+        if (a.components > 1) out << " " << a.components;
+        out << "\" NumberType=\"" << (a.integer ? "Int" : "Float") << "\" Precision=\"8\" Format=\"HDF\">" << f.file
+            << ":/" << a.name << "</DataItem>\n";
         out << "    </Attribute>\n";
       }
       out << "   </Grid>\n";
@@ -170,6 +189,12 @@ const std::vector<double>& FieldFrameData::field(const std::string& name) const 
   const auto it = std::find(names.begin(), names.end(), name);
   if (it == names.end()) HALFETI_USER_ERROR("field file has no field '" << name << "'");
   return values[static_cast<size_t>(it - names.begin())];
+}
+
+const FieldFrameData::Info& FieldFrameData::field_info(const std::string& name) const {
+  const auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end()) HALFETI_USER_ERROR("field file has no field '" << name << "'");
+  return info[static_cast<size_t>(it - names.begin())];
 }
 
 FieldFrameData read_field_file(const std::string& path) {
@@ -192,11 +217,24 @@ FieldFrameData read_field_file(const std::string& path) {
       d.cells = h5::read_all<std::int64_t>(file, "cells", H5T_NATIVE_INT64, path);
       continue;
     }
+    const h5::DatasetShape shape = h5::dataset_shape(file, n, path);
+    FieldFrameData::Info fi;
+    fi.unit = h5::read_dataset_attribute(file, n, "unit", path);
+    fi.components = shape.columns;
+    fi.center = h5::read_dataset_attribute(file, n, "center", path) == "cell" ? Center::kCell : Center::kNode;
+    fi.integer = shape.integer;
     d.names.push_back(n);
-    d.values.push_back(h5::read_all<double>(file, n, H5T_NATIVE_DOUBLE, path));
+    d.info.push_back(fi);
+    if (shape.integer) {
+      const auto ints = h5::read_all<std::int64_t>(file, n, H5T_NATIVE_INT64, path);
+      d.values.emplace_back(ints.begin(), ints.end());
+    } else {
+      d.values.push_back(h5::read_all<double>(file, n, H5T_NATIVE_DOUBLE, path));
+    }
   }
   if (H5Aexists(file, "fields") > 0) {  // the order of writing
     std::vector<std::string> names;
+    std::vector<FieldFrameData::Info> infos;
     std::vector<std::vector<double>> values;
     const std::string order = h5::read_string_attribute(file, "fields", path);
     for (std::size_t start = 0; start < order.size();) {
@@ -204,13 +242,16 @@ FieldFrameData read_field_file(const std::string& path) {
       const std::string n = order.substr(start, comma - start);
       const auto it = std::find(d.names.begin(), d.names.end(), n);
       if (it != d.names.end()) {
+        const auto k = static_cast<std::size_t>(it - d.names.begin());
         names.push_back(n);
-        values.push_back(std::move(d.values[static_cast<std::size_t>(it - d.names.begin())]));
+        infos.push_back(d.info[k]);
+        values.push_back(std::move(d.values[k]));
       }
       start = comma + 1;
     }
     if (names.size() == d.names.size()) {
       d.names = std::move(names);
+      d.info = std::move(infos);
       d.values = std::move(values);
     }
   }

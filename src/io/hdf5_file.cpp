@@ -73,17 +73,19 @@ hid_t create_collective(MPI_Comm comm, const std::string& path) {
 }
 
 void write_slab(hid_t where, const std::string& name, hid_t type, const void* data, long long offset,
-                long long count, long long total, const std::string& file) {
+                long long count, long long total, const std::string& file, int columns) {
   const std::string what = "write " + name + " to '" + file + "'";
-  const hsize_t dims[1] = {static_cast<hsize_t>(total)};
-  Id space(H5Screate_simple(1, dims, nullptr), H5Sclose, Use::kWrite, "dataspace for " + name);
+  const int rank = columns > 1 ? 2 : 1;
+  const hsize_t dims[2] = {static_cast<hsize_t>(total), static_cast<hsize_t>(columns)};
+  Id space(H5Screate_simple(rank, dims, nullptr), H5Sclose, Use::kWrite, "dataspace for " + name);
   errno = 0;
   Id dset(H5Dcreate2(where, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
           Use::kWrite, "create dataset " + name + " in '" + file + "'");
   if (total == 0) return;  // an empty dataset: nothing to transfer
-  const hsize_t start[1] = {static_cast<hsize_t>(offset)}, cnt[1] = {static_cast<hsize_t>(count)};
+  const hsize_t start[2] = {static_cast<hsize_t>(offset), 0},
+                cnt[2] = {static_cast<hsize_t>(count), static_cast<hsize_t>(columns)};
   Id filespace(H5Dget_space(dset), H5Sclose, Use::kWrite, "file space of " + name);
-  Id memspace(H5Screate_simple(1, cnt, nullptr), H5Sclose, Use::kWrite, "memory space of " + name);
+  Id memspace(H5Screate_simple(rank, cnt, nullptr), H5Sclose, Use::kWrite, "memory space of " + name);
   // The same checks on every rank (they are collective under CollectiveWrites), whether it writes or not.
   const herr_t selected = count > 0 ? H5Sselect_hyperslab(filespace, H5S_SELECT_SET, start, nullptr, cnt, nullptr)
                                     : std::min(H5Sselect_none(filespace), H5Sselect_none(memspace));
@@ -125,6 +127,34 @@ std::string read_string_attribute(hid_t where, const std::string& name, const st
   std::string value(n, '\0');
   check(H5Aread(attr, type, value.data()), Use::kRead, "read " + name + " of '" + file + "'");
   return value.substr(0, value.find('\0'));
+}
+
+DatasetShape dataset_shape(hid_t where, const std::string& name, const std::string& file) {
+  Id dset(H5Dopen2(where, name.c_str(), H5P_DEFAULT), H5Dclose, Use::kRead,
+          "open dataset " + name + " of '" + file + "'");
+  Id space(H5Dget_space(dset), H5Sclose, Use::kRead, "space of " + name);
+  Id type(H5Dget_type(dset), H5Tclose, Use::kRead, "type of " + name);
+  hsize_t dims[2] = {0, 1};
+  const int rank = H5Sget_simple_extent_ndims(space);
+  if (rank < 1 || rank > 2) fail(Use::kRead, "dataset " + name + " of '" + file + "' is neither 1-D nor 2-D");
+  H5Sget_simple_extent_dims(space, dims, nullptr);
+  return {static_cast<long long>(dims[0]), rank == 2 ? static_cast<int>(dims[1]) : 1,
+          H5Tget_class(type) == H5T_INTEGER};
+}
+
+void write_dataset_attribute(hid_t where, const std::string& dataset, const std::string& name,
+                             const std::string& value, const std::string& file) {
+  Id dset(H5Dopen2(where, dataset.c_str(), H5P_DEFAULT), H5Dclose, Use::kWrite,
+          "open dataset " + dataset + " of '" + file + "'");
+  write_attribute(dset, name, value, file);
+}
+
+std::string read_dataset_attribute(hid_t where, const std::string& dataset, const std::string& name,
+                                   const std::string& file) {
+  Id dset(H5Dopen2(where, dataset.c_str(), H5P_DEFAULT), H5Dclose, Use::kRead,
+          "open dataset " + dataset + " of '" + file + "'");
+  if (H5Aexists(dset, name.c_str()) <= 0) return "";
+  return read_string_attribute(dset, name, file);
 }
 
 template <class T>

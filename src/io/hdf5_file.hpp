@@ -60,9 +60,18 @@ class Id {
 
 void quiet();  // no HDF5 error stacks on stderr: our messages name what failed
 
-// Collective: this rank's `count` values at `offset` of a 1-D dataset of `total`, in `where` (a file or group).
+// Collective: this rank's `count` rows at row `offset` of a dataset of `total` rows, in `where` (a file or group):
+// 1-D with one column, `total` x `columns` (row-major) with more.
 void write_slab(hid_t where, const std::string& name, hid_t type, const void* data, long long offset,
-                long long count, long long total, const std::string& file);
+                long long count, long long total, const std::string& file, int columns = 1);
+
+// What a stored dataset is: its column count (1 for a 1-D dataset) and whether it holds integers.
+struct DatasetShape {
+  long long rows = 0;
+  int columns = 1;
+  bool integer = false;
+};
+DatasetShape dataset_shape(hid_t where, const std::string& name, const std::string& file);
 
 template <class T>
 std::vector<T> read_all(hid_t where, const std::string& name, hid_t type, const std::string& file);
@@ -72,6 +81,12 @@ void write_attribute(hid_t where, const std::string& name, double value, const s
 void write_attribute(hid_t where, const std::string& name, const std::string& value, const std::string& file);
 double read_double_attribute(hid_t where, const std::string& name, const std::string& file);
 std::string read_string_attribute(hid_t where, const std::string& name, const std::string& file);
+// A string attribute of the dataset `dataset` in `where` (collective where the file is), and its reading back
+// ("" when the dataset has no such attribute).
+void write_dataset_attribute(hid_t where, const std::string& dataset, const std::string& name,
+                             const std::string& value, const std::string& file);
+std::string read_dataset_attribute(hid_t where, const std::string& dataset, const std::string& name,
+                                   const std::string& file);
 
 // Creates (truncating) `path` for collective writing over MPI-IO; a negative id on failure (check it with Id).
 hid_t create_collective(MPI_Comm comm, const std::string& path);

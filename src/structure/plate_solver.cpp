@@ -424,6 +424,27 @@ double PlateSolver::element_von_mises(int element) const {
   return sum / 9.0;
 }
 
+void PlateSolver::element_fields(std::vector<double>& von_mises, std::vector<double>& energy_density) const {
+  const int n = mesh_.element_count();
+  std::vector<double> both(2 * static_cast<std::size_t>(n), 0.0);  // each element from its one owner, summed
+  const double density = params_.material.density;
+  for (int k : partition_.owned_elements) {
+    const bool q4 = mesh_.element_type == ElementType::kQ4Eas;
+    const double energy = q4 ? integrator4_->energy(geometry4_[k], quad_displacement(k), alpha_[k])
+                             : integrator_->energy(geometry_[k], element_displacement(k));
+    const double area = (q4 ? mass4_[k].sum() : mass_[k].sum()) / density;  // the scalar mass sums to rho A
+    both[2 * k] = element_von_mises(k);
+    both[2 * k + 1] = energy / area;
+  }
+  if (size_ > 1) MPI_Allreduce(MPI_IN_PLACE, both.data(), 2 * n, MPI_DOUBLE, MPI_SUM, comm_.get());
+  von_mises.resize(static_cast<std::size_t>(n));
+  energy_density.resize(static_cast<std::size_t>(n));
+  for (int k = 0; k < n; ++k) {
+    von_mises[k] = both[2 * k];
+    energy_density[k] = both[2 * k + 1];
+  }
+}
+
 double PlateSolver::max_von_mises() const {
   double m = 0.0;
   for (int k : partition_.owned_elements) {

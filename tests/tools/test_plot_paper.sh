@@ -16,6 +16,15 @@ done
 /usr/bin/python3 "$root/tools/paper" compare "$work/paper" --markdown "$work/comparison.md" >/dev/null
 grep -q "| cosine_cable: initial cable tension \[kPa\] | 135 | 135 | -0 % |" "$work/comparison.md" \
   || { echo "initial tension row wrong:"; grep "initial cable" "$work/comparison.md"; exit 1; }
-grep -q "| sine_free | not run |" "$work/comparison.md" || { echo "missing runs not marked"; exit 1; }
+grep -qF '| sine_free | not run (`tools/paper run sine_free`) |' "$work/comparison.md" \
+  || { echo "missing runs not marked with their command"; exit 1; }
+grep -qF '| sine: max tip displacement, free [% of height] | 35% | not run (`tools/paper run sine_free`) |' \
+  "$work/comparison.md" || { echo "a row of a missing run does not name its command"; exit 1; }
 if /usr/bin/python3 "$root/tools/plot" "$work/nowhere" 2>/dev/null; then echo "a missing run was accepted"; exit 1; fi
+# A run without water has nothing to animate: one line naming why, exit 2.
+set +e
+message=$(/usr/bin/python3 "$root/tools/plot" "$work/paper/cosine_cable" --movie 2>&1 >/dev/null)
+status=$?
+set -e
+[ "$status" -eq 2 ] && grep -q "no field files" <<<"$message" || { echo "--movie without water: $status '$message'"; exit 1; }
 echo "plot and paper: ok"

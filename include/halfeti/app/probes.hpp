@@ -5,6 +5,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "halfeti/app/parts.hpp"
@@ -14,8 +15,12 @@
 namespace halfeti::app {
 
 struct ProbeColumn {
+  ProbeColumn(std::string n, std::function<double(double t)> s, std::string u)
+      : name(std::move(n)), sample(std::move(s)), unit(std::move(u)) {}
   std::string name;
   std::function<double(double t)> sample;  // collective over the run's ranks; same value on every rank
+  std::string unit;                          // SI ("-" for a pure number, "dx" in particle spacings): probes.json
+  std::string kind;                          // the probe's kind (set by make_probes)
 };
 
 // Throws UserError when the probe names a part the scene does not have.

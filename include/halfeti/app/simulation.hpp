@@ -57,8 +57,11 @@ class Simulation {
   void prepare_structure();
   void step_structure(double t, double dt);
   void load_cables(double t);
-  void write_fields(double t);
+  void write_fields(double t);  // every series of the run's parts (simulation_fields.cpp)
+  void write_fluid_fields(double t);
   void write_plate_fields(double t);
+  void write_cable_fields(double t);
+  void write_tank_outline();
   // between_steps: false for the checkpoint at a failure inside a step (for inspection; a restart refuses it).
   void write_checkpoint(const std::string& label, bool between_steps = true);
   void restore(io::Checkpoint checkpoint);
@@ -81,7 +84,7 @@ class Simulation {
   std::vector<ProbeColumn> probes_;
   std::unique_ptr<io::ProbeWriter> probe_out_;
   std::unique_ptr<io::RunLog> log_;
-  std::unique_ptr<io::FieldSeries> fluid_fields_, plate_fields_;
+  std::unique_ptr<io::FieldSeries> fluid_fields_, plate_fields_, cable_fields_, tank_fields_;
   PhaseTimers timers_;
   RunHealth health_;
   double t_ = 0.0;

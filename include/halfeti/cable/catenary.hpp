@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <vector>
 
 namespace halfeti::cable {
 
@@ -66,6 +67,17 @@ struct CatenarySolution {
 // fails.
 CatenarySolution solve_catenary(const Eigen::Vector2d& end1, const Eigen::Vector2d& end2,
                                 const CableProperties& cable, const Eigen::Vector2d* first_guess = nullptr);
+
+// The shape of a solved cable, for drawing: `segments` + 1 points at equal unstretched arc lengths from end 1 to
+// end 2 (eqs. 15-16 in the solver's frame, rotated back) with the tension there (eq. 14). A weightless cable is
+// straight with one tension (none when slack: its shape is then unknown and drawn as the chord).
+struct CurvePoint {
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();
+  double tension = 0.0;
+};
+std::vector<CurvePoint> catenary_curve(const Eigen::Vector2d& end1, const Eigen::Vector2d& end2,
+                                       const CableProperties& cable, const CatenarySolution& solution,
+                                       int segments);
 
 // The unstretched length for which T(L0) (the tension at end 2) equals `end_tension`, on the taut branch.
 // Throws UserError if no length attains it (a heavy cable's end tension has a positive minimum).

@@ -12,9 +12,30 @@
 
 namespace halfeti::io {
 
-struct PointField {
+// Where a field lives: one value per point or one per cell of a mesh series.
+enum class Center { kNode, kCell };
+
+// One field of a frame: a scalar, a vector (three components, z = 0 in the 2-D model, so that ParaView's glyphs
+// and warps take it as it is) or integer ids, with its unit (SI; "-" for a pure number, "" for an id), which goes
+// to the HDF5 dataset's `unit` attribute and to an XDMF Information element.
+struct Field {
   std::string name;
-  const double* values;  // one per local point
+  std::string unit;
+  bool is_integer = false;                // the same on every rank (a rank without points passes no data)
+  const double* real = nullptr;           // `components` values per point (or cell), one point after another
+  const std::int64_t* integer = nullptr;  // or one integer per point (or cell)
+  int components = 1;
+  Center center = Center::kNode;
+
+  static Field scalar(std::string name, std::string unit, const double* values, Center center = Center::kNode) {
+    return {std::move(name), std::move(unit), false, values, nullptr, 1, center};
+  }
+  static Field vector(std::string name, std::string unit, const double* xyz, Center center = Center::kNode) {
+    return {std::move(name), std::move(unit), false, xyz, nullptr, 3, center};
+  }
+  static Field ids(std::string name, const std::int64_t* values, Center center = Center::kNode) {
+    return {std::move(name), "", true, nullptr, values, 1, center};
+  }
 };
 
 // Cells of a mesh series: `nodes_per_cell` global point indices per local cell, XDMF topology name
@@ -33,8 +54,9 @@ class FieldSeries {
 
   // Collective: every rank passes its local points (possibly none). Without cells the points are a cloud
   // (Polyvertex). Returns the path of the file written.
+  // Cell fields need cells.
   std::string write(double time, std::size_t n_local, const double* x, const double* y,
-                    const std::vector<PointField>& fields, const CellBlock* cells = nullptr);
+                    const std::vector<Field>& fields, const CellBlock* cells = nullptr);
 
   // Collective: continue the series found in dir (a restart into the run's own folder): its files up to `time`
   // are kept, later ones removed, and the next write follows them.
@@ -44,11 +66,17 @@ class FieldSeries {
   const std::string& xdmf_path() const { return xdmf_path_; }
 
  private:
+  struct FieldInfo {
+    std::string name, unit;
+    int components = 1;
+    Center center = Center::kNode;
+    bool integer = false;
+  };
   struct Frame {
     double time;
     std::string file;  // relative to dir
     long long n_points, n_cells;
-    std::vector<std::string> fields;
+    std::vector<FieldInfo> fields;
     std::string topology;
     int nodes_per_cell;
   };
@@ -61,14 +89,22 @@ class FieldSeries {
 
 // A whole frame read back (serially, any rank).
 struct FieldFrameData {
+  struct Info {
+    std::string unit;
+    int components = 1;
+    Center center = Center::kNode;
+    bool integer = false;
+  };
   double time = 0.0;
-  std::vector<std::string> names;                 // point fields, without x and y
+  std::vector<std::string> names;                 // fields in their order of writing, without x and y
+  std::vector<Info> info;                         // aligned with names
   std::vector<double> x, y;
-  std::vector<std::vector<double>> values;        // aligned with names
+  std::vector<std::vector<double>> values;        // aligned with names: components per point (cell); ids exact
   std::vector<std::int64_t> cells;                // empty for point clouds
   std::string topology;                           // XDMF topology of the cells (with cells)
   int nodes_per_cell = 0;
   const std::vector<double>& field(const std::string& name) const;
+  const Info& field_info(const std::string& name) const;
 };
 FieldFrameData read_field_file(const std::string& path);
 

@@ -169,6 +169,9 @@ class PlateSolver {
   double gravity_potential_energy() const;      // J/m, -sum_n m_n g . u_n: gravity's work undone since the reference
   double element_von_mises(int element) const;  // Pa, mean over the element's 3x3 (Q4: 2x2) points (Cauchy)
   double max_von_mises() const;                 // Pa, max over all points
+  // Collective over the plate's ranks: for every element (on every rank), the mean von Mises stress over its points
+  // [Pa] and its strain energy per reference area, the strain energy density [J/m^3].
+  void element_fields(std::vector<double>& von_mises, std::vector<double>& energy_density) const;
   PhaseTimers& timers() { return timers_; }
   // One line for the run log: mesh, dofs, material, hypothesis, integration, Newmark, ranks, per unit depth.
   std::string summary() const;

@@ -248,6 +248,33 @@ TEST(UnstretchedLength, InvertsTheEndTension) {
   EXPECT_THROW(unstretched_length_for_end_tension(a, b, ea, w, -1.0), UserError);
 }
 
+// The drawn shape: it starts and ends at the cable's ends, carries the end tensions of eq. 14, and its polyline is
+// as long as the stretched cable, the integral of 1 + T / EA over s0 (within the polyline's O(1/n^2) chord error:
+// 1e-3 at 64 segments). A slack heavy cable, a taut one, and one under a sideways load (the solver's rotated frame).
+TEST(CatenaryCurve, EndsAtTheEndsWithTheEndTensionsAndTheStretchedLength) {
+  struct Case { Eigen::Vector2d a, b; double l0, ea, w, side; };
+  for (const Case& c : {Case{{0.0, 0.0}, {1.0, 0.2}, 1.3, 50.0, 2.0, 0.0},
+                        Case{{0.0, 0.0}, {-0.8, 0.5}, 0.9, 400.0, 1.0, 0.0},
+                        Case{{0.2, 0.1}, {0.9, 0.4}, 1.0, 80.0, 1.5, 0.7}}) {
+    CableProperties cable = make_cable(c.l0, c.ea, c.w);
+    cable.horizontal_load = c.side;
+    const CatenarySolution s = solve_catenary(c.a, c.b, cable);
+    const int n = 64;
+    const auto curve = catenary_curve(c.a, c.b, cable, s, n);
+    ASSERT_EQ(curve.size(), static_cast<std::size_t>(n + 1));
+    EXPECT_LT((curve.front().position - c.a).norm(), 1e-12);
+    EXPECT_LT((curve.back().position - c.b).norm(), 1e-9 * s.chord) << "l0 = " << c.l0;
+    EXPECT_NEAR(curve.front().tension, s.tension_start, 1e-12 * s.tension_start);
+    EXPECT_NEAR(curve.back().tension, s.tension_end, 1e-9 * s.tension_end);
+    double polyline = 0.0, stretched = 0.0;
+    for (int k = 0; k < n; ++k) {
+      polyline += (curve[k + 1].position - curve[k].position).norm();
+      stretched += c.l0 / n * (1.0 + 0.5 * (curve[k].tension + curve[k + 1].tension) / c.ea);
+    }
+    EXPECT_NEAR(polyline, stretched, 1e-3 * stretched) << "l0 = " << c.l0;
+  }
+}
+
 TEST(CatenarySolver, FailsLoudlyOnBadInput) {
   EXPECT_THROW(solve_catenary({0.0, 0.0}, {1.0, 0.0}, make_cable(0.0, 1.0, 1.0)), InternalError);
   EXPECT_THROW(solve_catenary({0.0, 0.0}, {NAN, 0.0}, make_cable(1.0, 1.0, 1.0)), InternalError);

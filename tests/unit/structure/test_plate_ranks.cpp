@@ -3,6 +3,8 @@
 // alone on PETSC_COMM_SELF as the reference.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "halfeti/core/error.hpp"
 #include "plate_fixtures.hpp"
 
@@ -13,6 +15,7 @@ namespace {
 struct PlateRun {
   Eigen::Vector2d static_tip, dynamic_tip;
   double strain_energy, kinetic_energy, max_von_mises;
+  double energy_from_density, max_element_von_mises;  // from the per-element output fields
   int iterations;
 };
 
@@ -38,6 +41,13 @@ PlateRun run(MPI_Comm comm, hs::ElementType element) {
   r.strain_energy = s.strain_energy();
   r.kinetic_energy = s.kinetic_energy();
   r.max_von_mises = s.max_von_mises();
+  std::vector<double> von_mises, density;
+  s.element_fields(von_mises, density);
+  // The mesh is uniform: every element has the area thickness x height / element count.
+  const double area = p.geometry.thickness * p.geometry.height / s.mesh().element_count();
+  r.energy_from_density = 0.0;
+  for (double e : density) r.energy_from_density += e * area;
+  r.max_element_von_mises = *std::max_element(von_mises.begin(), von_mises.end());
   return r;
 }
 
@@ -61,6 +71,12 @@ TEST(PlateRanks, SameAnswerOnOneAndSeveralRanks) {
   EXPECT_NEAR(shared.strain_energy, alone.strain_energy, 1e-10 * alone.strain_energy);
   EXPECT_NEAR(shared.kinetic_energy, alone.kinetic_energy, 1e-8 * alone.kinetic_energy);
   EXPECT_NEAR(shared.max_von_mises, alone.max_von_mises, 1e-8 * alone.max_von_mises);
+  // The output's per-element fields: the energy densities integrate to the strain energy, the element means stay
+  // below the largest point value (and above half of it in this bending), on any rank count.
+  EXPECT_NEAR(shared.energy_from_density, shared.strain_energy, 1e-10 * shared.strain_energy);
+  EXPECT_LE(shared.max_element_von_mises, shared.max_von_mises * (1 + 1e-12));
+  EXPECT_GT(shared.max_element_von_mises, 0.5 * shared.max_von_mises);
+  EXPECT_NEAR(shared.max_element_von_mises, alone.max_element_von_mises, 1e-8 * alone.max_element_von_mises);
   // Sums in another order can move a convergence test across its threshold by one iteration.
   EXPECT_NEAR(shared.iterations, alone.iterations, 2);
   }

@@ -1,0 +1,120 @@
+// summary.json: the run's status, provenance, size, cost, timers, mass balance and health, written by rank 0
+// (DESIGN.md's output contract; README "Outputs").
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+
+#include "halfeti/app/simulation.hpp"
+#include "halfeti/core/collective.hpp"
+#include "halfeti/core/version.hpp"
+#include "halfeti/io/json.hpp"
+
+namespace halfeti::app {
+
+void Simulation::write_summary(const std::string& status, double wall, double loop_wall) {
+  // Every rank takes part in the collective reads below; rank 0 writes.
+  const long long particles = parts_.fluid ? parts_.fluid->global_count() : 0;
+  const double mass = parts_.fluid ? parts_.fluid->total_mass() : 0.0;
+  PhaseTimers timers = timers_;
+  if (parts_.fluid) timers.merge(parts_.fluid->timers());
+  if (parts_.coupling) {
+    PhaseTimers contact;
+    const PhaseTimers coupling_timers = parts_.coupling->timers();  // returned by value: keep it alive
+    for (const auto& [phase, seconds] : coupling_timers.all()) contact.add("contact_" + phase, seconds);
+    timers.merge(contact);
+  }
+  if (parts_.plate) {
+    PhaseTimers plate;
+    for (const auto& [phase, seconds] : parts_.plate->timers().all()) plate.add(phase, seconds);
+    timers.merge(plate);
+  }
+  const long long dofs = parts_.plate ? parts_.plate->dof_count() : 0;  // written by rank 0, a structure rank
+  // Cost: CPU seconds (user + system) summed over the ranks, and the peak resident memory of the busiest rank and
+  // of all ranks together (getrusage: this process since it started).
+  struct rusage usage {};
+  getrusage(RUSAGE_SELF, &usage);
+  const double cpu_here = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                          1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+  const double rss_here = 1024.0 * static_cast<double>(usage.ru_maxrss);  // Linux reports kB
+  double sums[2] = {cpu_here, rss_here}, rss_max = rss_here;
+  MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, comm_);
+  MPI_Allreduce(MPI_IN_PLACE, &rss_max, 1, MPI_DOUBLE, MPI_MAX, comm_);
+  collective_outcome(comm_, 0, rank_ == 0, [&] {  // rank 0 writes; a failed write stops every rank
+    const scene::Node root = scene_.root();
+    io::Json j = io::Json::object();
+    j.set("halfeti", kVersion);
+    j.set("exit_status", status);
+    j.set("scene", root.section("scene").string("name"));
+    j.set("scene_file", scene_.file);
+    if (root.section("scene").has("description")) j.set("description", root.section("scene").string("description"));
+    // Provenance: what ran, where, when and from what.
+    io::Json prov = io::Json::object();
+    prov.set("version", kVersion).set("commit", kGitCommit).set("command_line", options_.command_line);
+    char host[256] = "";
+    gethostname(host, sizeof host - 1);
+    prov.set("host", host).set("started", started_utc_);
+    const char* job = std::getenv("SLURM_JOB_ID");
+    prov.set("slurm_job_id", job ? io::Json(std::string(job)) : io::Json());
+    prov.set("restarted_from", restart_path_.empty() ? io::Json() : io::Json(restart_path_));
+    j.set("provenance", prov);
+    j.set("ranks", size_);
+    j.set("particles", particles);  // now (water over the open top leaves the run)
+    j.set("initial_particles", initial_particles_);
+    j.set("structure_dofs", dofs);
+    j.set("cables", static_cast<int>(parts_.cable_setups.size()));
+    j.set("steps", steps_);
+    j.set("simulated_time", t_);
+    j.set("wall_time", wall);  // this run's (a restarted run's: since its restart)
+    j.set("loop_wall_time", loop_wall);
+    j.set("earlier_wall_time", earlier_wall_);  // of the runs it continues
+    const long long steps_here = steps_ - steps_at_start_;
+    j.set("ns_per_particle_step", particles > 0 && steps_here > 0
+                                      ? io::Json(1e9 * loop_wall / (static_cast<double>(particles) * steps_here))
+                                      : io::Json());
+    io::Json cost = io::Json::object();
+    cost.set("cpu_seconds", sums[0]).set("cpu_seconds_per_rank", sums[0] / size_);
+    cost.set("peak_memory_bytes_busiest_rank", rss_max).set("peak_memory_bytes_all_ranks", sums[1]);
+    j.set("cost", cost);  // this run's (a restarted run's: since its restart)
+    io::Json tj = io::Json::object();
+    for (const auto& [phase, seconds] : timers.all()) tj.set(phase, seconds);
+    j.set("timers", tj);
+    j.set("max_density_variation", parts_.fluid ? io::Json(max_density_variation_) : io::Json());
+    // Water thrown over the tank's open top leaves the run (a "spilled" health event); the error counts it in.
+    const double spilled = parts_.fluid ? parts_.fluid->spilled_mass() : 0.0;
+    j.set("mass_error",
+          parts_.fluid && initial_mass_ > 0 ? io::Json((mass + spilled - initial_mass_) / initial_mass_) : io::Json());
+    j.set("spilled_mass", parts_.fluid ? io::Json(spilled) : io::Json());
+    // Health: each kind's episodes, the first (its message) and the worst value with where and when; the list.
+    const HealthLog log = health_events();
+    const HealthTally health = tally(log);
+    const auto number = [](double v) { return std::isfinite(v) ? io::Json(v) : io::Json(); };
+    io::Json kinds = io::Json::object();
+    for (const auto& [kind, k] : health.kinds) {
+      io::Json kj = io::Json::object();
+      kj.set("episodes", k.episodes).set("fatal", k.fatal);
+      kj.set("first_time", k.first->time).set("first_step", k.first->step).set("first_message", k.first->message);
+      kj.set("worst", number(k.worst->worst)).set("worst_episode", k.worst->message).set("worst_time", number(k.worst->worst_time));
+      kj.set("worst_step", std::isfinite(k.worst->worst_time) ? io::Json(k.worst->worst_step) : io::Json());
+      io::Json place = io::Json::array();
+      place.push(number(k.worst->worst_x)).push(number(k.worst->worst_y));
+      kj.set("worst_at", std::isfinite(k.worst->worst_x) ? place : io::Json());
+      kinds.set(kind, kj);
+    }
+    io::Json hj = io::Json::object();
+    hj.set("warnings", health.warnings).set("summary", warnings_line(health)).set("by_kind", kinds);
+    j.set("health", hj);
+    io::Json events = io::Json::array();
+    for (const auto& e : log) {
+      io::Json ev = io::Json::object();
+      ev.set("time", e.time).set("step", e.step).set("kind", e.kind).set("fatal", e.fatal).set("message", e.message);
+      ev.set("worst", number(e.worst));
+      events.push(ev);
+    }
+    j.set("health_events", events);
+    io::write_file_atomically(out_dir_ + "/summary.json", j.dump() + "\n");
+  });
+}
+
+}  // namespace halfeti::app
