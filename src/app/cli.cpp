@@ -13,7 +13,7 @@ std::string usage_text() {
 
 usage:
   halfeti run SCENE.yaml [--set key.path=value ...] [--out DIR] [--restart PATH] [--overwrite]
-              [--max-wall SECONDS] [-- PETSc options]
+              [--max-wall SECONDS] [--trace coupling] [-- PETSc options]
   halfeti check SCENE.yaml [--set key.path=value ...]
   halfeti cable --from X1,Y1 --to X2,Y2 --modulus E --area A --density RHO
                 (--unstretched-length L0 | --tension-stress S) [...]   (halfeti cable --help)
@@ -33,6 +33,8 @@ compare  one error metric of a run's probe against reference data (RMS, peak, fr
 --overwrite  replaces another run's outputs in DIR (a run refuses a folder that holds them otherwise)
 --max-wall   stops at a step boundary, with a checkpoint, before SECONDS of wall time (as SIGTERM, SIGINT and
          SIGUSR1 do at any time), with exit status 5
+--trace coupling  a diagnostic line per coupled step and per invader on stderr (the contact's and the plate-wall
+         forces, the fastest particle; docs/coupling.md's noise figures)
 
 exit status: 0 success, 2 bad input (scene, file, option), 3 numerical failure, 4 internal error, 5 stopped by a
 signal or --max-wall (resumable with --restart), 6 an output could not be written (disk full, permission).
@@ -101,6 +103,10 @@ Command parse_command_line(const std::vector<std::string>& args) {
       c.max_wall = std::strtod(v.c_str(), &end);
       if (end == v.c_str() || *end != '\0' || !(c.max_wall > 0.0) || !std::isfinite(c.max_wall))
         HALFETI_USER_ERROR("--max-wall takes a positive number of seconds, got '" << v << "'");
+    } else if (a == "--trace" && c.kind == Command::Kind::kRun) {
+      const std::string& v = value("--trace");
+      if (v != "coupling") HALFETI_USER_ERROR("--trace takes 'coupling' (the one diagnostic trace), got '" << v << "'");
+      c.trace_coupling = true;
     } else if (!a.empty() && a[0] == '-') {
       HALFETI_USER_ERROR("unknown option '" << a << "' for 'halfeti " << word << "'; try 'halfeti --help'");
     } else if (c.scene.empty()) {

@@ -68,6 +68,7 @@ int execute(const std::vector<std::string>& args, MPI_Comm comm) {
       opts.restart = cmd.restart;
       opts.overwrite = cmd.overwrite;
       opts.max_wall = cmd.max_wall;
+      opts.trace_coupling = cmd.trace_coupling;
       opts.command_line = "halfeti";
       for (const auto& a : args) opts.command_line += " " + a;
       int status = 0;

@@ -10,26 +10,6 @@ namespace halfeti::app {
 using scene::Key;
 using scene::Schema;
 
-const sph::FluidParams& Parts::require_fluid(const std::string& who) const {
-  if (!fluid_params) HALFETI_USER_ERROR(who << ": this probe reads the water, but the scene has no `fluid:` section");
-  return *fluid_params;
-}
-
-const StructureSetup& Parts::require_structure(const std::string& who) const {
-  if (!structure_setup)
-    HALFETI_USER_ERROR(who << ": this probe reads the plate, but the scene has no `structure:` section");
-  return *structure_setup;
-}
-
-int Parts::cable_index(const std::string& who, const std::string& name) const {
-  for (size_t i = 0; i < cable_setups.size(); ++i)
-    if (cable_setups[i].name == name) return static_cast<int>(i);
-  std::string known;
-  for (const auto& c : cable_setups) known += (known.empty() ? "" : ", ") + c.name;
-  HALFETI_USER_ERROR(who << ": no cable named '" << name << "'"
-                         << (known.empty() ? " (the scene has no cables)" : " (cables: " + known + ")"));
-}
-
 namespace {
 
 // Structure and cable values live on the structure's rank; every rank returns the same number.

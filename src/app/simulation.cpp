@@ -20,6 +20,7 @@
 #include "halfeti/core/error.hpp"
 #include "halfeti/core/files.hpp"
 #include "halfeti/core/version.hpp"
+#include "halfeti/coupling/lattice_alignment.hpp"
 #include "halfeti/excitation/excitation_scene.hpp"
 #include "halfeti/io/checkpoint.hpp"
 #include "halfeti/io/json.hpp"
@@ -27,16 +28,6 @@
 namespace halfeti::app {
 
 namespace {
-
-
-
-// The largest |a_g| over the run, sampled finely enough for records (0.02 s) and pulses.
-double peak_ground_acceleration(const excitation::GroundMotion& m, double end) {
-  double peak = 0.0;
-  const int n = std::max(2000, static_cast<int>(end / 1e-3));
-  for (int i = 0; i <= n; ++i) peak = std::max(peak, std::abs(m.acceleration(end * i / n)));
-  return peak;
-}
 
 std::string format(const char* fmt, double a) {
   char buf[64];
@@ -82,111 +73,6 @@ std::string utc_now() {
   char buf[32];
   std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
   return buf;
-}
-
-}  // namespace
-
-namespace {
-void read_parameters(const scene::Scene& scene, Parts& parts);
-}  // namespace
-
-std::vector<ProbeColumn> build_parameters(const scene::Scene& scene, Parts& parts) {
-  // Checks across keys name the key path; the scene file is added here.
-  try {
-    read_parameters(scene, parts);
-    return make_probes(scene.root(), parts);
-  } catch (const UserError& e) {
-    const std::string what = e.what();
-    if (what.rfind(scene.file, 0) == 0) throw;
-    throw UserError(scene.file + ": " + what);
-  }
-}
-
-namespace {
-void read_parameters(const scene::Scene& scene, Parts& parts) {
-  const scene::Node root = scene.root();
-  parts.scene_dir = directory_of(scene.file);
-  // The name names the output folder out/<name>: one folder name, not a path.
-  const std::string name = root.section("scene").string("name");
-  const bool plain = !name.empty() && name != "." && name != ".." &&
-                     std::all_of(name.begin(), name.end(), [](char c) {
-                       return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
-                     });
-  if (!plain)
-    HALFETI_USER_ERROR("scene.name '" << name << "': letters, digits, '_', '-' and '.' only (it names the folder "
-                                          "out/<name>)");
-  parts.gravity = root.real("gravity");
-  parts.motion = excitation::make_ground_motion(root.section("excitation"), parts.scene_dir);
-  const double end = root.section("scene").real("end_time");
-  if (root.has("fluid")) parts.fluid_params = fluid_params(root, peak_ground_acceleration(*parts.motion, end));
-  if (root.has("structure")) parts.structure_setup = structure_setup(root);
-  if (!root.list("cables").empty() && !parts.structure_setup)
-    HALFETI_USER_ERROR("cables: need a `structure:` to hold (the plate they attach to)");
-  if (parts.structure_setup)
-    parts.cable_setups =
-        cable_setups(root, *parts.structure_setup, parts.fluid_params ? parts.fluid_params->density : 0.0);
-  if (parts.fluid_params && parts.structure_setup) {
-    parts.coupling_params = coupling_params(root);
-    // The water fills its blocks except where the plate stands, as its lattice resolves it: the plate's faces
-    // rounded to the nearest lattice lines (ties outward, at least one column). The plate-wall ghosts stand at
-    // those lines, so that the first water row is half a spacing from them (docs/coupling.md, section 12).
-    const auto& g = parts.structure_setup->params.geometry;
-    const auto& fp = *parts.fluid_params;
-    const double dx = fp.spacing, x0 = fp.water.front().x0, y0 = fp.water.front().y0;
-    const double left = g.base_centre.x() - 0.5 * g.thickness, right = g.base_centre.x() + 0.5 * g.thickness;
-    const double lattice_left = x0 + dx * std::ceil((left - x0) / dx - 0.5);
-    const double lattice_right = std::max(x0 + dx * std::floor((right - x0) / dx + 0.5), lattice_left + dx);
-    if (g.orientation == structure::Orientation::kStanding) {
-      const double top = g.base_centre.y() + g.height;
-      const double lattice_top = y0 + dx * std::floor((top - y0) / dx + 0.5);
-      parts.plate_offsets = {lattice_right - right, left - lattice_left, lattice_top - top};
-      parts.fluid_params->exclusions.push_back({lattice_left, g.base_centre.y() - dx, lattice_right, lattice_top});
-    } else {
-      // Hanging (the standing plate turned about its clamp): the free end is the bottom, rounded down on a tie;
-      // the offsets are in the plate's frame, whose "right" face (the outline's first) is the tank's left face.
-      const double bottom = g.base_centre.y() - g.height;
-      const double lattice_bottom = y0 + dx * std::ceil((bottom - y0) / dx - 0.5);
-      parts.plate_offsets = {left - lattice_left, lattice_right - right, bottom - lattice_bottom};
-      parts.fluid_params->exclusions.push_back({lattice_left, lattice_bottom, lattice_right, g.base_centre.y() + dx});
-    }
-  }
-}
-}  // namespace
-
-namespace {
-
-// The plate and its cables live on the first structure.ranks world ranks (the structure's own communicator; rank 0
-// is always one of them and holds what probes and outputs read).
-void build_structure(Parts& parts, MPI_Comm comm) {
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
-  const bool member = rank < parts.structure_setup->ranks;
-  MPI_Comm sub = MPI_COMM_NULL;
-  MPI_Comm_split(comm, member ? 0 : MPI_UNDEFINED, rank, &sub);
-  parts.structure_comm = Communicator::adopt(sub);
-  parts.structure_rank = member;
-  if (!parts.structure_rank) return;
-  const StructureSetup& s = *parts.structure_setup;
-  parts.plate = std::make_unique<structure::PlateSolver>(parts.structure_comm.get(), s.params, parts.motion.get());
-  for (const auto& l : s.point_loads) parts.plate->add_point_load(parts.plate->mesh().node(l.node), l.force);
-  for (const auto& c : parts.cable_setups) {
-    const int node = parts.plate->mesh().node(c.node);
-    parts.cables.push_back(std::make_unique<cable::CableElement>(c.anchor, node,
-                                                                 cable::cable_properties(c.set, c.unstretched_length)));
-    parts.plate->add_nodal_element(parts.cables.back().get());
-  }
-  // One evaluation at the initial geometry, so that t = 0 probes read the initial tension.
-  for (auto& c : parts.cables) {
-    const int node = c->nodes()[0];
-    Eigen::VectorXd f;
-    Eigen::MatrixXd k;
-    c->evaluate({parts.plate->position(node)}, f, k);
-  }
-}
-
-// Mass per unit length of a cable set per unit depth that feels the tank's inertial load (as its weight does).
-double cable_line_mass(const CableSetup& c) {
-  return c.set.count * (c.set.density - c.set.fluid_density) * c.set.area / c.set.depth;
 }
 
 }  // namespace
@@ -261,6 +147,7 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
   }
   if (parts_.coupling_params) {
     auto& cp = *parts_.coupling_params;
+    cp.trace = options_.trace_coupling;
     const auto& fluid = *parts_.fluid;
     cp.density = fluid.params().density;
     cp.sound_speed = fluid.sound_speed();
@@ -309,34 +196,7 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
   });
 }
 
-
 Simulation::~Simulation() = default;
-
-void Simulation::announce() {
-  log_->line(std::string("halfeti ") + kVersion + ": scene " + scene_.file + " on " + std::to_string(size_) +
-             " rank(s); output in " + out_dir_);
-  log_->line("excitation: " + parts_.motion->describe());
-  if (const auto* f = parts_.fluid.get()) {
-    std::ostringstream os;
-    os << "fluid: " << f->global_count() << " particles, dx = " << f->params().spacing
-       << " m, h = " << f->smoothing_length() << " m, c0 = " << f->sound_speed() << " m/s, scheme "
-       << (f->params().scheme == sph::Scheme::kDeltaSph ? "delta-SPH" : "standard SPH");
-    log_->line(os.str());
-    if (f->params().cfl > 1.0)
-      log_->warning("fluid.cfl = " + format("%g", f->params().cfl) +
-                    " is past the explicit step's usual stability limit (1): expect the run to fail");
-  }
-  if (parts_.plate) log_->line(parts_.plate->summary());
-  for (const auto& c : parts_.cable_setups) {
-    log_->line(cable::describe_per_depth(c.set, c.name));
-    std::ostringstream os;
-    os << "cable " << c.name << ": anchor [" << c.anchor.x() << ", " << c.anchor.y() << "] to " << c.node
-       << ", unstretched length " << c.unstretched_length << " m";
-    if (c.initial_stress > 0) os << " (from the initial stress " << c.initial_stress << " Pa)";
-    log_->line(os.str());
-  }
-  if (!parts_.fluid && !parts_.structure_setup) log_->line("no parts: the clock advances by the probe interval");
-}
 
 void Simulation::prepare_structure() {
   if (!parts_.structure_setup) return;
@@ -355,7 +215,7 @@ void Simulation::load_cables(double t) {
   // The tank frame's inertial load on the cables (their weight stays in the element), at the end of the step.
   const double ag = parts_.motion->acceleration(t);
   for (size_t i = 0; i < parts_.cables.size(); ++i)
-    parts_.cables[i]->set_horizontal_load(-cable_line_mass(parts_.cable_setups[i]) * ag);
+    parts_.cables[i]->set_horizontal_load(cable::tank_frame_load(parts_.cable_setups[i].set, ag));
 }
 
 void Simulation::step_structure(double t, double dt) {
@@ -395,22 +255,7 @@ double Simulation::advance_coupled() {
     f.set_plate_outline(parts_.coupling->plate_outline());  // with its mid-line as the barrier
   else
     f.set_barriers(parts_.coupling->outline());
-  // Diagnostic: one line per step on stderr (contact and plate-wall forces on the plate's side), for the noise
-  // figures of docs/coupling.md.
-  static const bool trace = std::getenv("HALFETI_TRACE_COUPLING") != nullptr;
-  if (trace) {
-    const auto& r = parts_.coupling->last_step();
-    double best = 0, bx = 0, by = 0;  // this rank's fastest particle
-    for (std::size_t i = 0; i < f.owned_count(); ++i) {
-      const double u = std::hypot(f.vx()[i], f.vy()[i]);
-      if (u > best) { best = u; bx = f.x()[i]; by = f.y()[i]; }
-    }
-    std::fprintf(stderr, "coupling_trace_fastest t=%.6f u=%.3g at (%.5f, %.5f)\n", f.time(), best, bx, by);
-    if (rank_ == 0)
-      std::fprintf(stderr, "coupling_trace t=%.6f inv=%d rel=%d L=%.3g umax=%.3g Fc=(%.4g,%.4g) maxF=%.3g Fw=(%.4g,%.4g)\n", f.time(),
-                   r.invaders, r.released, r.layer, r.u_max, r.force_x, r.force_y, r.max_force,
-                   parts_.coupling->fluid_load_x(), parts_.coupling->fluid_load_y());
-  }
+  if (options_.trace_coupling) trace_coupled_step();
   return dt;
 }
 
@@ -438,15 +283,6 @@ void Simulation::sample(double t) {
   for (auto& p : probes_) row.push_back(p.sample(t));
   probe_out_->write(t, row);
   if (parts_.fluid) max_density_variation_ = std::max(max_density_variation_, parts_.fluid->max_density_variation());
-}
-
-std::string Simulation::progress_line(double dt, double wall) const {
-  const double end = scene_.root().section("scene").real("end_time");
-  const double eta = t_ > 0 ? wall * std::max(0.0, end - t_) / t_ : 0.0;
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "t = %.4f s (%5.1f%%)  step %lld  dt = %.3e s  wall %.1f s  eta %.1f s", t_,
-                std::min(100.0, 100.0 * t_ / end), steps_, dt, wall, eta);
-  return buf;
 }
 
 // Whether every rank should stop at this step's end: a signal reached one of them, or (rank 0's clock) the next

@@ -44,6 +44,10 @@ double tension_per_cable(const CableSet& set, double tension_per_depth) {
   return tension_per_depth * set.depth / set.count;
 }
 
+double tank_frame_load(const CableSet& set, double ground_acceleration) {
+  return -set.count * (set.density - set.fluid_density) * set.area / set.depth * ground_acceleration;
+}
+
 std::string describe_per_depth(const CableSet& set, const std::string& name) {
   const PerDepthCable c = per_unit_depth(set);
   std::ostringstream out;

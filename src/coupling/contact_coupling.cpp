@@ -259,8 +259,7 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
     const ContactPoint c = before.closest_within_reach(x);  // found by the same search on the owner: in reach
     HALFETI_CHECK(c.segment >= 0, "invader " << g.gid << " out of the search's reach");
     invaders.push_back({x, g.mass, c.segment, c.projection.eta, relocated_gap(c.projection.gap, layer)});
-    static const bool trace = std::getenv("HALFETI_TRACE_COUPLING") != nullptr;  // one line per invader
-    if (trace)
+    if (params_.trace)  // one line per invader
       std::fprintf(stderr, "invader t=%.6f gid=%lld x=(%.7f, %.7f) seg=%d eta=%.4f gap=%.3e m=%.3e\n", t,
                    static_cast<long long>(g.gid), g.x, g.y, c.segment, c.projection.eta, c.projection.gap, g.mass);
     predicted_gap.push_back(c.projection.gap);

@@ -15,6 +15,7 @@ struct Command {
   std::string restart;                   // --restart PATH
   bool overwrite = false;                // --overwrite
   double max_wall = 0.0;                 // --max-wall SECONDS (0: none)
+  bool trace_coupling = false;           // --trace coupling
   std::vector<std::string> petsc_args;   // after --
   std::vector<std::string> tool_args;    // cable: everything after the word
 };

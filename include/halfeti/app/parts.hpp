@@ -47,4 +47,7 @@ struct Parts {
   int cable_index(const std::string& who, const std::string& name) const;
 };
 
+// Builds the plate and its cables on the first structure.ranks ranks of `comm` (collective; the others hold nulls).
+void build_structure(Parts& parts, MPI_Comm comm);
+
 }  // namespace halfeti::app

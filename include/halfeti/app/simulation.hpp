@@ -28,6 +28,7 @@ struct RunOptions {
   std::string restart;                  // --restart: a checkpoint, or a run folder (its latest checkpoint)
   bool overwrite = false;               // --overwrite: clear another run's outputs from the folder first
   double max_wall = 0.0;                // --max-wall: stop (resumable) before this many wall seconds; 0: none
+  bool trace_coupling = false;          // --trace coupling: diagnostic lines per coupled step on stderr
   std::string command_line;             // for summary.json's provenance
 };
 
@@ -62,6 +63,7 @@ class Simulation {
   void write_plate_fields(double t);
   void write_cable_fields(double t);
   void write_tank_outline();
+  void trace_coupled_step() const;  // --trace coupling: the step's contact and plate-wall forces, the fastest particle
   // between_steps: false for the checkpoint at a failure inside a step (for inspection; a restart refuses it).
   void write_checkpoint(const std::string& label, bool between_steps = true);
   void restore(io::Checkpoint checkpoint);

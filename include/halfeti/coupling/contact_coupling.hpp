@@ -85,6 +85,7 @@ struct CouplingParameters {
   SsosdParameters ssosd;   // scene: coupling.ssosd.{enabled,layer_ratio,velocity_floor}
   double inside_tolerance = 1e-6;  // m, > 0: an invader ending deeper than this past the surface is an error
   std::string options_prefix = "structure_contact_";  // PETSc options prefix of the contact KSP
+  bool trace = false;  // not a scene key: `halfeti run --trace coupling` (a line per invader on stderr)
 };
 
 void validate(const CouplingParameters& p);  // UserError naming coupling.<key>

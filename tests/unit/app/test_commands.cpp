@@ -123,6 +123,8 @@ TEST(Commands, RunWritesProbesSummaryLogAndResolvedScene) {
                           "\"exit_status\": \"ok\"", "\"timers\"", "\"health_events\"", "\"wall_time\""})
     EXPECT_NE(summary.find(key), std::string::npos) << key;
   EXPECT_NE(file_text(out + "/log.txt").find("done:"), std::string::npos);
+  const std::string columns = file_text(out + "/probes.json");  // each column's unit
+  EXPECT_NE(columns.find("\"name\": \"ag\",\n      \"unit\": \"m/s^2\""), std::string::npos) << columns;
   // The resolved scene runs again as it is and records the override.
   const std::string resolved = file_text(out + "/scene.resolved.yaml");
   EXPECT_NE(resolved.find("amplitude: 2.0"), std::string::npos);
@@ -140,6 +142,10 @@ TEST(Commands, CommandLineParsing) {
   EXPECT_THROW(app::parse_command_line({"check", "a.yaml", "b.yaml"}), UserError);
   EXPECT_THROW(app::parse_command_line({"check", "a.yaml", "--out", "o"}), UserError);
   EXPECT_THROW(app::parse_command_line({"run", "a.yaml", "--set"}), UserError);
+  EXPECT_FALSE(c.trace_coupling);
+  EXPECT_TRUE(app::parse_command_line({"run", "a.yaml", "--trace", "coupling"}).trace_coupling);
+  EXPECT_THROW(app::parse_command_line({"run", "a.yaml", "--trace", "fluid"}), UserError);
+  EXPECT_THROW(app::parse_command_line({"check", "a.yaml", "--trace", "coupling"}), UserError);
 }
 
 TEST(Commands, ProbeKindsComeFromTheRegistry) {

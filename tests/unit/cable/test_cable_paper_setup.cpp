@@ -43,6 +43,14 @@ TEST(PaperSetup, PerDepthFigures) {
   EXPECT_NE(text.find("w' = 0.11772 N/m^2"), std::string::npos) << text;
 }
 
+// In the tank's frame the ground acceleration acts on the cable's buoyant mass as gravity does: the sideways load
+// is the weight w' times -a_g / g.
+TEST(PaperSetup, TankFrameLoadIsTheBuoyantWeightTimesMinusAgOverG) {
+  const CableSet set = paper_cables();
+  for (double ag : {-3.13, 0.0, 2.5})
+    EXPECT_NEAR(tank_frame_load(set, ag), -per_unit_depth(set).weight_per_length * ag / set.gravity, 1e-15);
+}
+
 TEST(PaperSetup, UnstretchedLength162cmGivesAbout15kPaNot135) {
   const double chord = (kRubberCorner - kWallAnchor).norm();
   EXPECT_NEAR(chord, 0.164171, 1e-6);  // sqrt(0.1485^2 + 0.07^2), longer than 16.2 cm: taut

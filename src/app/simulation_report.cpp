@@ -1,10 +1,13 @@
-// summary.json: the run's status, provenance, size, cost, timers, mass balance and health, written by rank 0
+// What a run tells: its start-up lines (log.txt), the progress line, the coupling trace (--trace coupling), and
+// summary.json, the run's status, provenance, size, cost, timers, mass balance and health, written by rank 0
 // (DESIGN.md's output contract; README "Outputs").
 #include <sys/resource.h>
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <sstream>
 
 #include "halfeti/app/simulation.hpp"
 #include "halfeti/core/collective.hpp"
@@ -12,6 +15,66 @@
 #include "halfeti/io/json.hpp"
 
 namespace halfeti::app {
+
+void Simulation::announce() {
+  log_->line(std::string("halfeti ") + kVersion + ": scene " + scene_.file + " on " + std::to_string(size_) +
+             " rank(s); output in " + out_dir_);
+  log_->line("excitation: " + parts_.motion->describe());
+  if (const auto* f = parts_.fluid.get()) {
+    std::ostringstream os;
+    os << "fluid: " << f->global_count() << " particles, dx = " << f->params().spacing
+       << " m, h = " << f->smoothing_length() << " m, c0 = " << f->sound_speed() << " m/s, scheme "
+       << (f->params().scheme == sph::Scheme::kDeltaSph ? "delta-SPH" : "standard SPH");
+    log_->line(os.str());
+    if (f->params().cfl > 1.0) {
+      std::ostringstream w;
+      w << "fluid.cfl = " << f->params().cfl
+        << " is past the explicit step's usual stability limit (1): expect the run to fail";
+      log_->warning(w.str());
+    }
+  }
+  if (parts_.plate) log_->line(parts_.plate->summary());
+  for (const auto& c : parts_.cable_setups) {
+    log_->line(cable::describe_per_depth(c.set, c.name));
+    std::ostringstream os;
+    os << "cable " << c.name << ": anchor [" << c.anchor.x() << ", " << c.anchor.y() << "] to " << c.node
+       << ", unstretched length " << c.unstretched_length << " m";
+    if (c.initial_stress > 0) os << " (from the initial stress " << c.initial_stress << " Pa)";
+    log_->line(os.str());
+  }
+  if (!parts_.fluid && !parts_.structure_setup) log_->line("no parts: the clock advances by the probe interval");
+}
+
+std::string Simulation::progress_line(double dt, double wall) const {
+  const double end = scene_.root().section("scene").real("end_time");
+  const double eta = t_ > 0 ? wall * std::max(0.0, end - t_) / t_ : 0.0;
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "t = %.4f s (%5.1f%%)  step %lld  dt = %.3e s  wall %.1f s  eta %.1f s", t_,
+                std::min(100.0, 100.0 * t_ / end), steps_, dt, wall, eta);
+  return buf;
+}
+
+// One line per coupled step on stderr (rank 0: the contact and plate-wall forces on the plate's side; every rank:
+// its fastest particle), for the noise figures of docs/coupling.md.
+void Simulation::trace_coupled_step() const {
+  const sph::Fluid& f = *parts_.fluid;
+  const auto& r = parts_.coupling->last_step();
+  double best = 0, bx = 0, by = 0;
+  for (std::size_t i = 0; i < f.owned_count(); ++i) {
+    const double u = std::hypot(f.vx()[i], f.vy()[i]);
+    if (u > best) {
+      best = u;
+      bx = f.x()[i];
+      by = f.y()[i];
+    }
+  }
+  std::fprintf(stderr, "coupling_trace_fastest t=%.6f u=%.3g at (%.5f, %.5f)\n", f.time(), best, bx, by);
+  if (rank_ == 0)
+    std::fprintf(stderr,
+                 "coupling_trace t=%.6f inv=%d rel=%d L=%.3g umax=%.3g Fc=(%.4g,%.4g) maxF=%.3g Fw=(%.4g,%.4g)\n",
+                 f.time(), r.invaders, r.released, r.layer, r.u_max, r.force_x, r.force_y, r.max_force,
+                 parts_.coupling->fluid_load_x(), parts_.coupling->fluid_load_y());
+}
 
 void Simulation::write_summary(const std::string& status, double wall, double loop_wall) {
   // Every rank takes part in the collective reads below; rank 0 writes.
