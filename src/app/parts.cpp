@@ -98,6 +98,25 @@ void read_parameters(const scene::Scene& scene, Parts& parts) {
 }
 }  // namespace
 
+void build_parts(Parts& parts, MPI_Comm comm, bool trace_coupling) {
+  if (parts.fluid_params) parts.fluid = std::make_unique<sph::Fluid>(comm, *parts.fluid_params, parts.motion.get());
+  if (parts.structure_setup) build_structure(parts, comm);
+  if (!parts.coupling_params) return;
+  auto& cp = *parts.coupling_params;
+  cp.trace = trace_coupling;
+  const auto& fluid = *parts.fluid;
+  cp.density = fluid.params().density;
+  cp.sound_speed = fluid.sound_speed();
+  cp.spacing = fluid.params().spacing;
+  parts.coupling = std::make_unique<coupling::ContactCoupling>(comm, parts.plate.get(), cp);
+  if (cp.plate_wall) {
+    parts.fluid->set_plate_offsets(parts.plate_offsets);
+    parts.fluid->set_plate_outline(parts.coupling->plate_outline());  // and its mid-line as the barrier
+  } else {
+    parts.fluid->set_barriers(parts.coupling->outline());
+  }
+}
+
 // The plate and its cables live on the first structure.ranks world ranks (the structure's own communicator; rank 0
 // is always one of them and holds what probes and outputs read).
 void build_structure(Parts& parts, MPI_Comm comm) {

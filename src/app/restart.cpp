@@ -13,7 +13,9 @@
 #include <sstream>
 
 #include "halfeti/core/error.hpp"
+#include "halfeti/core/collective.hpp"
 #include "halfeti/core/files.hpp"
+#include "halfeti/io/run_log.hpp"
 
 namespace halfeti::app {
 
@@ -120,6 +122,54 @@ bool same_folder(const std::string& a, const std::string& b) {
   char ra[PATH_MAX], rb[PATH_MAX];
   if (::realpath(a.c_str(), ra) == nullptr || ::realpath(b.c_str(), rb) == nullptr) return false;
   return std::strcmp(ra, rb) == 0;
+}
+
+std::unique_ptr<io::Checkpoint> read_restart(const std::string& restart, const scene::Scene& scene,
+                                             std::string& checkpoint_path) {
+  checkpoint_path = io::resolve_checkpoint(restart);
+  auto checkpoint = std::make_unique<io::Checkpoint>(io::read_checkpoint(checkpoint_path));
+  const auto scene_text = checkpoint->texts.find("scene");
+  if (scene_text == checkpoint->texts.end()) HALFETI_USER_ERROR("restart: '" << checkpoint_path << "' holds no scene");
+  const std::string changed = changed_physics_key(scene_text->second, scene.resolved_text());
+  if (!changed.empty())
+    HALFETI_USER_ERROR(scene.file << ": the scene changes " << changed << " from the checkpoint '" << checkpoint_path
+                                  << "'; a continued run may change only scene.end_time, scene.description and "
+                                     "output.*");
+  const double end = scene.root().section("scene").real("end_time");
+  if (!(checkpoint->time < end))
+    HALFETI_USER_ERROR("restart: the checkpoint is at t = " << checkpoint->time << " s, not before scene.end_time = "
+                                                            << end << " s (raise it with --set scene.end_time=...)");
+  return checkpoint;
+}
+
+bool prepare_run_folder(MPI_Comm comm, const std::string& out_dir, const io::Checkpoint* checkpoint,
+                        const std::string& checkpoint_path, bool overwrite) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  bool continuing = false;
+  collective_outcome(comm, 0, rank == 0, [&] {
+    for (const char* sub : {"", "/fields", "/checkpoints"}) io::make_directories(out_dir + sub);
+    continuing = checkpoint && same_folder(out_dir, run_folder_of(checkpoint_path));
+    if (continuing) {
+      // Checkpoints after the one continued from belong to the run being replaced.
+      for (const auto& f : io::list_checkpoints(out_dir + "/checkpoints"))
+        if (f > out_dir + "/checkpoints/" + io::checkpoint_file_name(checkpoint->steps)) std::remove(f.c_str());
+      return;
+    }
+    const auto earlier = run_outputs(out_dir);
+    if (earlier.empty()) return;
+    if (!overwrite)
+      HALFETI_USER_ERROR("'" << out_dir << "' holds the outputs of another run (" << earlier.front()
+                             << (earlier.size() > 1 ? ", ..." : "")
+                             << "); give --overwrite to replace them, --restart " << out_dir
+                             << " to continue that run, or another --out");
+    for (const auto& f : earlier)
+      if (std::remove(f.c_str()) != 0)
+        HALFETI_IO_ERROR("--overwrite: cannot remove '" << f << "': " << std::strerror(errno));
+  });
+  int flag = continuing ? 1 : 0;
+  MPI_Bcast(&flag, 1, MPI_INT, 0, comm);
+  return flag != 0;
 }
 
 }  // namespace halfeti::app

@@ -86,80 +86,23 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
 
   // A restart reads its checkpoint on every rank and refuses a scene that changes the physics.
   std::unique_ptr<io::Checkpoint> checkpoint;
-  if (!options_.restart.empty()) {
-    restart_path_ = io::resolve_checkpoint(options_.restart);
-    checkpoint = std::make_unique<io::Checkpoint>(io::read_checkpoint(restart_path_));
-    const auto scene_text = checkpoint->texts.find("scene");
-    if (scene_text == checkpoint->texts.end())
-      HALFETI_USER_ERROR("restart: '" << restart_path_ << "' holds no scene");
-    const std::string changed = changed_physics_key(scene_text->second, scene_.resolved_text());
-    if (!changed.empty())
-      HALFETI_USER_ERROR(scene_.file << ": the scene changes " << changed << " from the checkpoint '" << restart_path_
-                                     << "'; a continued run may change only scene.end_time, scene.description and "
-                                        "output.*");
-    const double end = root.section("scene").real("end_time");
-    if (!(checkpoint->time < end))
-      HALFETI_USER_ERROR("restart: the checkpoint is at t = " << checkpoint->time << " s, not before scene.end_time = "
-                                                              << end << " s (raise it with --set scene.end_time=...)");
-  }
-
-  // The folder: made on rank 0, the outcome shared. It must not hold another run's outputs (unless --overwrite
-  // clears them, or this run continues the run it holds).
-  continuing_ = false;
-  collective_outcome(comm_, 0, rank_ == 0, [&] {
-    for (const char* sub : {"", "/fields", "/checkpoints"}) io::make_directories(out_dir_ + sub);
-    continuing_ = checkpoint && same_folder(out_dir_, run_folder_of(restart_path_));
-    if (continuing_) {
-      // Checkpoints after the one continued from belong to the run being replaced.
-      for (const auto& f : io::list_checkpoints(out_dir_ + "/checkpoints"))
-        if (f > out_dir_ + "/checkpoints/" + io::checkpoint_file_name(checkpoint->steps)) std::remove(f.c_str());
-      return;
-    }
-    const auto earlier = run_outputs(out_dir_);
-    if (earlier.empty()) return;
-    if (!options_.overwrite)
-      HALFETI_USER_ERROR("'" << out_dir_ << "' holds the outputs of another run (" << earlier.front()
-                             << (earlier.size() > 1 ? ", ..." : "")
-                             << "); give --overwrite to replace them, --restart " << out_dir_
-                             << " to continue that run, or another --out");
-    for (const auto& f : earlier)
-      if (std::remove(f.c_str()) != 0) HALFETI_IO_ERROR("--overwrite: cannot remove '" << f << "': " << std::strerror(errno));
-  });
-  int flag = continuing_ ? 1 : 0;
-  MPI_Bcast(&flag, 1, MPI_INT, 0, comm_);
-  continuing_ = flag != 0;
+  if (!options_.restart.empty()) checkpoint = read_restart(options_.restart, scene_, restart_path_);
+  continuing_ = prepare_run_folder(comm_, out_dir_, checkpoint.get(), restart_path_, options_.overwrite);
 
   probes_ = build_parameters(scene_, parts_);
   estimate_size(scene_, parts_, size_);  // before anything large is allocated
-  if (parts_.fluid_params) {
+  {
     ScopedTimer timer(timers_, "setup");
-    parts_.fluid = std::make_unique<sph::Fluid>(comm_, *parts_.fluid_params, parts_.motion.get());
-    initial_particles_ = parts_.fluid->global_count();  // the lattice's (a restart's is built before its restore)
-    fluid_fields_ = std::make_unique<io::FieldSeries>(comm_, out_dir_ + "/fields", "fluid");
-    tank_fields_ = std::make_unique<io::FieldSeries>(comm_, out_dir_ + "/fields", "tank");
+    build_parts(parts_, comm_, options_.trace_coupling);
   }
-  if (parts_.structure_setup) {
-    ScopedTimer timer(timers_, "setup");
-    build_structure(parts_, comm_);
-    plate_fields_ = std::make_unique<io::FieldSeries>(comm_, out_dir_ + "/fields", "plate");
-    if (!parts_.cable_setups.empty())
-      cable_fields_ = std::make_unique<io::FieldSeries>(comm_, out_dir_ + "/fields", "cables");
+  if (parts_.fluid) initial_particles_ = parts_.fluid->global_count();  // the lattice's (before a restore)
+  const std::string fields = out_dir_ + "/fields";
+  if (parts_.fluid) {
+    fluid_fields_ = std::make_unique<io::FieldSeries>(comm_, fields, "fluid");
+    tank_fields_ = std::make_unique<io::FieldSeries>(comm_, fields, "tank");
   }
-  if (parts_.coupling_params) {
-    auto& cp = *parts_.coupling_params;
-    cp.trace = options_.trace_coupling;
-    const auto& fluid = *parts_.fluid;
-    cp.density = fluid.params().density;
-    cp.sound_speed = fluid.sound_speed();
-    cp.spacing = fluid.params().spacing;
-    parts_.coupling = std::make_unique<coupling::ContactCoupling>(comm_, parts_.plate.get(), cp);
-    if (parts_.coupling_params->plate_wall) {
-      parts_.fluid->set_plate_offsets(parts_.plate_offsets);
-      parts_.fluid->set_plate_outline(parts_.coupling->plate_outline());  // and its mid-line as the barrier
-    } else {
-      parts_.fluid->set_barriers(parts_.coupling->outline());
-    }
-  }
+  if (parts_.structure_setup) plate_fields_ = std::make_unique<io::FieldSeries>(comm_, fields, "plate");
+  if (!parts_.cable_setups.empty()) cable_fields_ = std::make_unique<io::FieldSeries>(comm_, fields, "cables");
   if (checkpoint) {
     ScopedTimer timer(timers_, "restart");
     restore(*checkpoint);
@@ -183,13 +126,12 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
   collective_outcome(comm_, 0, true,
                      [&] { log_ = std::make_unique<io::RunLog>(out_dir_ + "/log.txt", rank_ == 0, options_.echo, continuing_); });
   collective_outcome(comm_, 0, rank_ == 0, [&] {
-    // probes.csv's sidecar: each column's unit and kind, for plots and readers (tools/plot labels from it).
-    io::Json columns = io::Json::array();
-    columns.push(io::Json::object().set("name", "t").set("unit", "s").set("kind", "time"));
-    for (const auto& p : probes_)
-      columns.push(io::Json::object().set("name", p.name).set("unit", p.unit).set("kind", p.kind));
-    io::write_file_atomically(out_dir_ + "/probes.json",
-                              io::Json::object().set("file", "probes.csv").set("columns", columns).dump() + "\n");
+    std::vector<std::string> units, kinds;
+    for (const auto& p : probes_) {
+      units.push_back(p.unit);
+      kinds.push_back(p.kind);
+    }
+    io::write_file_atomically(out_dir_ + "/probes.json", io::probe_columns_json(names, units, kinds));
     io::write_file_atomically(out_dir_ + "/scene.resolved.yaml", std::string("# resolved by halfeti ") + kVersion +
                                                                     " from " + scene_.file + "\n" +
                                                                     scene_.resolved_text());

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "halfeti/core/error.hpp"
+#include "halfeti/io/json.hpp"
 
 namespace halfeti::io {
 
@@ -53,6 +54,16 @@ void ProbeWriter::write(double t, const std::vector<double>& values) {
   for (double v : values) std::fprintf(file_, ",%.9g", v);
   std::fputc('\n', file_);
   flush();
+}
+
+std::string probe_columns_json(const std::vector<std::string>& names, const std::vector<std::string>& units,
+                               const std::vector<std::string>& kinds) {
+  HALFETI_CHECK(names.size() == units.size() && names.size() == kinds.size(), "probe columns without units or kinds");
+  Json columns = Json::array();
+  columns.push(Json::object().set("name", "t").set("unit", "s").set("kind", "time"));
+  for (std::size_t k = 0; k < names.size(); ++k)
+    columns.push(Json::object().set("name", names[k]).set("unit", units[k]).set("kind", kinds[k]));
+  return Json::object().set("file", "probes.csv").set("columns", columns).dump() + "\n";
 }
 
 std::vector<double> ProbeTable::column(const std::string& name) const {

@@ -47,7 +47,9 @@ struct Parts {
   int cable_index(const std::string& who, const std::string& name) const;
 };
 
-// Builds the plate and its cables on the first structure.ranks ranks of `comm` (collective; the others hold nulls).
-void build_structure(Parts& parts, MPI_Comm comm);
+// Collective: builds the parts whose parameters `parts` holds: the water, the plate and its cables (on the first
+// structure.ranks ranks of `comm`; the others hold nulls), and the coupling between them.
+void build_parts(Parts& parts, MPI_Comm comm, bool trace_coupling);
+void build_structure(Parts& parts, MPI_Comm comm);  // the plate and cables alone (part of build_parts)
 
 }  // namespace halfeti::app

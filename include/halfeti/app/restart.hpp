@@ -3,8 +3,14 @@
 // outputs it holds, the probe rows a continued run carries over).
 #pragma once
 
+#include <mpi.h>
+
+#include <memory>
 #include <string>
 #include <vector>
+
+#include "halfeti/core/scene.hpp"
+#include "halfeti/io/checkpoint.hpp"
 
 namespace halfeti::app {
 
@@ -28,5 +34,16 @@ std::string run_folder_of(const std::string& checkpoint);
 
 // Whether two paths name the same existing folder.
 bool same_folder(const std::string& a, const std::string& b);
+
+// The checkpoint `restart` names (a file, or a run folder's latest), read on every rank, with its path; refused
+// (UserError) when the scene changes the physics it was saved with or ends before it.
+std::unique_ptr<io::Checkpoint> read_restart(const std::string& restart, const scene::Scene& scene,
+                                             std::string& checkpoint_path);
+
+// Collective: makes the run folder `out_dir` (with fields/ and checkpoints/) on rank 0 and returns whether the run
+// continues the one it holds (a restart from its own checkpoint: later checkpoints removed). Any other run's outputs
+// there are refused, or removed with `overwrite`.
+bool prepare_run_folder(MPI_Comm comm, const std::string& out_dir, const io::Checkpoint* checkpoint,
+                        const std::string& checkpoint_path, bool overwrite);
 
 }  // namespace halfeti::app

@@ -33,6 +33,10 @@ class ProbeWriter {
   std::vector<std::string> names_;
 };
 
+// probes.csv's sidecar, probes.json: every column (`t` first) with its unit and probe kind.
+std::string probe_columns_json(const std::vector<std::string>& names, const std::vector<std::string>& units,
+                               const std::vector<std::string>& kinds);
+
 // Reads a probes.csv back (for tests and tools): column names and rows.
 struct ProbeTable {
   std::vector<std::string> names;  // including "t"
