@@ -19,7 +19,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-HALFETI = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "build", "src", "app", "halfeti")
+HALFETI = os.path.join(os.environ.get("HALFETI_BUILD") or os.path.join(os.path.dirname(os.path.dirname(
+    os.path.abspath(__file__))), "build"), "src", "app", "halfeti")  # HALFETI_BUILD: another build folder
 L = 0.146  # the benchmark's length scale [m]
 # Published tip histories as issue #14 summarises them (PFEM, SPH, partitioned FE, MPS-DEM): first peak and the
 # tip at 0.45 s.

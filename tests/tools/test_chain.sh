@@ -26,7 +26,7 @@ grep -q 'halfeti-chain: exit status 0' "$work/chain.log" || { echo "the last lin
 grep -qE '"exit_status": "ok(_with_warnings)?"' "$work/run/summary.json" || { echo "summary.json does not say ok"; exit 1; }
 grep -q -- '--signal=USR1@120' "$work/run/chain.sbatch" || { echo "the job asks for no signal before its limit"; exit 1; }
 grep -q -- 'srun --mpi=pmix' "$work/run/chain.sbatch" || { echo "the job does not call srun --mpi=pmix"; exit 1; }
-"$root/build/src/app/halfeti" run "$scene" --out "$work/direct" "${sets[@]}" > /dev/null
+"$2/src/app/halfeti" run "$scene" --out "$work/direct" "${sets[@]}" > /dev/null
 cmp "$work/run/probes.csv" "$work/direct/probes.csv" || { echo "the chained run's probes differ from the direct run's"; exit 1; }
 # A chain into a folder that holds another run without checkpoints is refused before anything is queued.
 rm -rf "$work/direct/checkpoints"/*

@@ -5,7 +5,7 @@ set -euo pipefail
 root=$1
 work=$2/plot_paper_test
 rm -rf "$work" && mkdir -p "$work/paper"
-"$root/build/src/app/halfeti" run "$root/inputs/validation/plate_cables.yaml" --out "$work/paper/cosine_cable" --overwrite \
+"$2/src/app/halfeti" run "$root/inputs/validation/plate_cables.yaml" --out "$work/paper/cosine_cable" --overwrite \
   --set scene.end_time=0.02 --set output.field_interval=0.01 >/dev/null
 /usr/bin/python3 "$root/tools/plot" "$work/paper/cosine_cable" >/dev/null
 for probe in tip_x left_stress right_stress right_slack; do
