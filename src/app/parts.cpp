@@ -45,25 +45,6 @@ double peak_ground_acceleration(const excitation::GroundMotion& m, double end) {
   return peak;
 }
 
-}  // namespace
-
-namespace {
-void read_parameters(const scene::Scene& scene, Parts& parts);
-}  // namespace
-
-std::vector<ProbeColumn> build_parameters(const scene::Scene& scene, Parts& parts) {
-  // Checks across keys name the key path; the scene file is added here.
-  try {
-    read_parameters(scene, parts);
-    return make_probes(scene.root(), parts);
-  } catch (const UserError& e) {
-    const std::string what = e.what();
-    if (what.rfind(scene.file, 0) == 0) throw;
-    throw UserError(scene.file + ": " + what);
-  }
-}
-
-namespace {
 void read_parameters(const scene::Scene& scene, Parts& parts) {
   const scene::Node root = scene.root();
   parts.scene_dir = directory_of(scene.file);
@@ -97,6 +78,18 @@ void read_parameters(const scene::Scene& scene, Parts& parts) {
   }
 }
 }  // namespace
+
+std::vector<ProbeColumn> build_parameters(const scene::Scene& scene, Parts& parts) {
+  // Checks across keys name the key path; the scene file is added here.
+  try {
+    read_parameters(scene, parts);
+    return make_probes(scene.root(), parts);
+  } catch (const UserError& e) {
+    const std::string what = e.what();
+    if (what.rfind(scene.file, 0) == 0) throw;
+    throw UserError(scene.file + ": " + what);
+  }
+}
 
 void build_parts(Parts& parts, MPI_Comm comm, bool trace_coupling) {
   if (parts.fluid_params) parts.fluid = std::make_unique<sph::Fluid>(comm, *parts.fluid_params, parts.motion.get());

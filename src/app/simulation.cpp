@@ -4,24 +4,18 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
-#include <cctype>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <ctime>
 #include <fstream>
-#include <sstream>
 
-#include "halfeti/app/coupling_section.hpp"
-#include "halfeti/app/fluid_section.hpp"
 #include "halfeti/app/restart.hpp"
 #include "halfeti/app/run_size.hpp"
 #include "halfeti/core/collective.hpp"
 #include "halfeti/core/error.hpp"
 #include "halfeti/core/files.hpp"
 #include "halfeti/core/version.hpp"
-#include "halfeti/coupling/lattice_alignment.hpp"
-#include "halfeti/excitation/excitation_scene.hpp"
 #include "halfeti/io/checkpoint.hpp"
 #include "halfeti/io/json.hpp"
 

@@ -50,7 +50,7 @@ std::string FieldSeries::write(double time, std::size_t n_local, const double* x
   MPI_Allreduce(local, total, 2, MPI_LONG_LONG, MPI_SUM, comm_);
 
   // Written under a temporary name and renamed when complete: a file of the series is whole or absent.
-  Frame frame{time, file_name, total[0], 0, {}, "Polyvertex", 1};
+  Frame frame{time, file_name, total[0], 0, {}, {}, "Polyvertex", 1};
   try {
     h5::CollectiveWrites collective(comm_, partial);
     Id file(h5::create_collective(comm_, partial), H5Fclose, Use::kWrite, "create '" + partial + "'");
@@ -70,10 +70,11 @@ std::string FieldSeries::write(double time, std::size_t n_local, const double* x
                        f.components);
       h5::write_dataset_attribute(file, f.name, "unit", f.unit, partial);
       h5::write_dataset_attribute(file, f.name, "center", center_name(f.center), partial);
-      frame.fields.push_back({f.name, f.unit, f.components, f.center, f.is_integer});
+      frame.names.push_back(f.name);
+      frame.layouts.push_back({f.unit, f.components, f.center, f.is_integer});
     }
     std::string order;  // the fields in their order of writing, for readers (HDF5 lists them by name)
-    for (const auto& n : frame.fields) order += (order.empty() ? "" : ",") + n.name;
+    for (const auto& n : frame.names) order += (order.empty() ? "" : ",") + n;
     h5::write_attribute(file, "fields", order, partial);
     if (cells) {
       const long long npc = cells->nodes_per_cell;
@@ -113,9 +114,7 @@ void FieldSeries::resume(double time) {
       if (static_cast<int>(frames_.size()) == k) {
         const FieldFrameData d = read_field_file(path);
         if (d.time <= time * (1.0 + 1e-12) + 1e-300) {
-          Frame f{d.time, file_name, static_cast<long long>(d.x.size()), 0, {}, "Polyvertex", 1};
-          for (std::size_t k = 0; k < d.names.size(); ++k)
-            f.fields.push_back({d.names[k], d.info[k].unit, d.info[k].components, d.info[k].center, d.info[k].integer});
+          Frame f{d.time, file_name, static_cast<long long>(d.x.size()), 0, d.names, d.info, "Polyvertex", 1};
           if (!d.cells.empty()) {
             f.topology = d.topology;
             f.nodes_per_cell = d.nodes_per_cell;
@@ -131,7 +130,7 @@ void FieldSeries::resume(double time) {
     write_xdmf();
   });
   MPI_Bcast(&kept, 1, MPI_INT, 0, comm_);
-  if (rank != 0) frames_.resize(static_cast<std::size_t>(kept), Frame{0.0, "", 0, 0, {}, "", 1});
+  if (rank != 0) frames_.resize(static_cast<std::size_t>(kept), Frame{0.0, "", 0, 0, {}, {}, "", 1});
 }
 
 void FieldSeries::write_xdmf() const {
@@ -164,15 +163,17 @@ void FieldSeries::write_xdmf() const {
       item("x", f.n_points, "Float", 8);
       item("y", f.n_points, "Float", 8);
       out << "    </Geometry>\n";
-      for (const auto& a : f.fields) {
+      for (std::size_t k = 0; k < f.names.size(); ++k) {
+        const FieldLayout& a = f.layouts[k];
+        const std::string& name = f.names[k];
         const long long rows = a.center == Center::kCell ? f.n_cells : f.n_points;
-        out << "    <Attribute Name=\"" << a.name << "\" AttributeType=\"" << (a.components == 3 ? "Vector" : "Scalar")
+        out << "    <Attribute Name=\"" << name << "\" AttributeType=\"" << (a.components == 3 ? "Vector" : "Scalar")
             << "\" Center=\"" << (a.center == Center::kCell ? "Cell" : "Node") << "\">\n";
         if (!a.unit.empty()) out << "     <Information Name=\"unit\" Value=\"" << a.unit << "\"/>\n";
         out << "     <DataItem Dimensions=\"" << rows;
         if (a.components > 1) out << " " << a.components;
         out << "\" NumberType=\"" << (a.integer ? "Int" : "Float") << "\" Precision=\"8\" Format=\"HDF\">" << f.file
-            << ":/" << a.name << "</DataItem>\n";
+            << ":/" << name << "</DataItem>\n";
         out << "    </Attribute>\n";
       }
       out << "   </Grid>\n";

@@ -384,10 +384,13 @@ StepReport PlateSolver::solve_static(double t, int load_increments) {
 
 double PlateSolver::strain_energy() const {
   double e = 0.0;
-  for (int k : partition_.owned_elements)
-    e += mesh_.element_type == ElementType::kQ9 ? integrator_->energy(geometry_[k], element_displacement(k))
-                                                : integrator4_->energy(geometry4_[k], quad_displacement(k), alpha_[k]);
+  for (int k : partition_.owned_elements) e += element_energy(k);
   return sum_over_ranks(e);
+}
+
+double PlateSolver::element_energy(int k) const {
+  return mesh_.element_type == ElementType::kQ9 ? integrator_->energy(geometry_[k], element_displacement(k))
+                                                : integrator4_->energy(geometry4_[k], quad_displacement(k), alpha_[k]);
 }
 
 double PlateSolver::gravity_potential_energy() const {
@@ -430,11 +433,9 @@ void PlateSolver::element_fields(std::vector<double>& von_mises, std::vector<dou
   const double density = params_.material.density;
   for (int k : partition_.owned_elements) {
     const bool q4 = mesh_.element_type == ElementType::kQ4Eas;
-    const double energy = q4 ? integrator4_->energy(geometry4_[k], quad_displacement(k), alpha_[k])
-                             : integrator_->energy(geometry_[k], element_displacement(k));
     const double area = (q4 ? mass4_[k].sum() : mass_[k].sum()) / density;  // the scalar mass sums to rho A
     both[2 * k] = element_von_mises(k);
-    both[2 * k + 1] = energy / area;
+    both[2 * k + 1] = element_energy(k) / area;
   }
   if (size_ > 1) MPI_Allreduce(MPI_IN_PLACE, both.data(), 2 * n, MPI_DOUBLE, MPI_SUM, comm_.get());
   von_mises.resize(static_cast<std::size_t>(n));

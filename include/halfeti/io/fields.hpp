@@ -38,6 +38,14 @@ struct Field {
   }
 };
 
+// What a stored field is, as the XDMF and a reader need it (its values aside).
+struct FieldLayout {
+  std::string unit;
+  int components = 1;
+  Center center = Center::kNode;
+  bool integer = false;
+};
+
 // Cells of a mesh series: `nodes_per_cell` global point indices per local cell, XDMF topology name
 // ("Quadrilateral", "Quadrilateral_9", "Polyline", ...).
 struct CellBlock {
@@ -66,17 +74,12 @@ class FieldSeries {
   const std::string& xdmf_path() const { return xdmf_path_; }
 
  private:
-  struct FieldInfo {
-    std::string name, unit;
-    int components = 1;
-    Center center = Center::kNode;
-    bool integer = false;
-  };
   struct Frame {
     double time;
     std::string file;  // relative to dir
     long long n_points, n_cells;
-    std::vector<FieldInfo> fields;
+    std::vector<std::string> names;    // the fields, in their order of writing
+    std::vector<FieldLayout> layouts;  // aligned with names
     std::string topology;
     int nodes_per_cell;
   };
@@ -89,12 +92,7 @@ class FieldSeries {
 
 // A whole frame read back (serially, any rank).
 struct FieldFrameData {
-  struct Info {
-    std::string unit;
-    int components = 1;
-    Center center = Center::kNode;
-    bool integer = false;
-  };
+  using Info = FieldLayout;
   double time = 0.0;
   std::vector<std::string> names;                 // fields in their order of writing, without x and y
   std::vector<Info> info;                         // aligned with names

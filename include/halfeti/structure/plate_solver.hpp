@@ -194,6 +194,7 @@ class PlateSolver {
   void newton_loop(const char* what);
   void compute_external(double t);
   Q9Coordinates element_displacement(int e) const;
+  double element_energy(int e) const;  // J/m, the element's strain energy (either element type)
   Q4Coordinates quad_displacement(int e) const;
   void update_acceleration();
   Eigen::VectorXd gather_in_node_order(Vec v);  // a distributed Vec of the owned layout, on every rank
