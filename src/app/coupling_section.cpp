@@ -53,6 +53,29 @@ std::shared_ptr<Schema> ssosd_schema() {
   return s;
 }
 
+std::shared_ptr<Schema> implicit_schema() {
+  auto s = std::make_shared<Schema>(
+      "Each step repeats the plate's solve and the water's force computation until the water's load on the plate "
+      "at the step's end agrees with the load the plate was solved under.");
+  s->add(Key::integer("max_iterations",
+                      "evaluations of the water's load per step at most (each costs a step's force computation); a "
+                      "step that reaches it unconverged is kept, counted and warned")
+             .def(20)
+             .in(1, 1000));
+  s->add(Key::real("tolerance", "||F_out - F_in|| / ||F_out|| over the plate's surface points at which a step is "
+                                "converged")
+             .def(1e-4)
+             .in(1e-12, 0.5));
+  s->add(Key::choice("acceleration",
+                     "iqn_ils (interface quasi-Newton, least-squares inverse Jacobian: Degroote et al. 2009) or "
+                     "relaxation (constant under-relaxation)",
+                     {"iqn_ils", "relaxation"})
+             .def("iqn_ils"));
+  s->add(Key::real("relaxation", "under-relaxation of the first (iqn_ils) or every (relaxation) update").def(1.0)
+             .in(1e-3, 1.0));
+  return s;
+}
+
 }  // namespace
 
 std::shared_ptr<const Schema> coupling_schema() {
@@ -80,10 +103,15 @@ std::shared_ptr<const Schema> coupling_schema() {
                         "with the interface added mass)")
                .def(false));
     s->add(Key::choice("plate_wall_exchange",
-                       "the explicit plate-water exchange: extrapolated (the water's load and the face's velocity "
-                       "extrapolated to mid-step, second order) or lagged (as computed at the step's start)",
-                       {"extrapolated", "lagged"})
+                       "the plate-water exchange: extrapolated (explicit, the water's load and the face's velocity "
+                       "extrapolated to mid-step, second order), lagged (explicit, as computed at the step's start) "
+                       "or implicit (converged within the step by interface quasi-Newton: the plate under the "
+                       "water's load at the step's end; needs added_mass: none; docs/coupling.md, section 16)",
+                       {"extrapolated", "lagged", "implicit"})
                .def("extrapolated"));
+    s->add(Key::section("implicit", "the converged exchange's iterations (plate_wall_exchange: implicit)",
+                        implicit_schema())
+               .always());
     s->add(Key::choice("added_mass",
                        "the water's mass the plate's faces carry implicitly in the plate's step against a change of "
                        "velocity: acoustic (rho0 c0 dt per face area, the water's impedance), layer "
@@ -118,7 +146,18 @@ coupling::CouplingParameters coupling_params(const scene::Node& root) {
   p.unilateral = c.boolean("unilateral");
   p.plate_wall = c.boolean("plate_wall");
   p.plate_wall_velocity = c.boolean("plate_wall_velocity");
-  p.plate_wall_extrapolated = c.string("plate_wall_exchange") == "extrapolated";
+  const std::string exchange = c.string("plate_wall_exchange");
+  using Exchange = coupling::CouplingParameters::PlateWallExchange;
+  p.plate_wall_exchange = exchange == "extrapolated" ? Exchange::kExtrapolated
+                          : exchange == "lagged"     ? Exchange::kLagged
+                                                     : Exchange::kImplicit;
+  const scene::Node implicit = c.section("implicit");
+  p.implicit.max_iterations = static_cast<int>(implicit.integer("max_iterations"));
+  p.implicit.tolerance = implicit.real("tolerance");
+  p.implicit.accelerator.method = implicit.string("acceleration") == "iqn_ils"
+                                      ? coupling::InterfaceAcceleration::kIqnIls
+                                      : coupling::InterfaceAcceleration::kRelaxation;
+  p.implicit.accelerator.relaxation = implicit.real("relaxation");
   p.added_mass_layer = c.real("added_mass_layer");
   const std::string added_mass = c.string("added_mass");
   p.added_mass_kind = added_mass == "acoustic" ? coupling::CouplingParameters::AddedMass::kAcoustic

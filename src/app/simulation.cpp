@@ -167,6 +167,7 @@ void Simulation::step_structure(double t, double dt) {
 // rank, the plate and the invaders solved together (eq. 21), the corrections handed back (eqs. 4, 22-24), then
 // the fluid finishes its step (health, migration) and the plate's new outline bars pairs across it.
 double Simulation::advance_coupled() {
+  if (parts_.coupling->parameters().implicit_exchange()) return advance_coupled_implicit();
   sph::Fluid& f = *parts_.fluid;
   f.compute_forces();
   const double t = f.time(), dt = f.dt();

@@ -143,6 +143,15 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
     io::Json tj = io::Json::object();
     for (const auto& [phase, seconds] : timers.all()) tj.set(phase, seconds);
     j.set("timers", tj);
+    if (parts_.coupling && parts_.coupling->parameters().implicit_exchange()) {  // this run's (since a restart)
+      io::Json ex = io::Json::object();
+      const auto& e = exchange_;
+      ex.set("steps", e.steps).set("evaluations", e.evaluations);
+      ex.set("evaluations_per_step", e.steps > 0 ? io::Json(double(e.evaluations) / double(e.steps)) : io::Json());
+      ex.set("most_in_a_step", e.most).set("unconverged_steps", e.unconverged);
+      ex.set("worst_unconverged_residual", e.unconverged > 0 ? io::Json(e.worst_residual) : io::Json());
+      j.set("exchange", ex);
+    }
     j.set("max_density_variation", parts_.fluid ? io::Json(max_density_variation_) : io::Json());
     // Water thrown over the tank's open top leaves the run (a "spilled" health event); the error counts it in.
     const double spilled = parts_.fluid ? parts_.fluid->spilled_mass() : 0.0;

@@ -20,14 +20,32 @@ void validate(const CouplingParameters& p) {
   validate(p.ssosd);
   if (!(p.inside_tolerance > 0.0))
     HALFETI_USER_ERROR("coupling.inside_tolerance = " << p.inside_tolerance << " m must be > 0");
+  if (p.implicit_exchange()) {
+    if (!p.plate_wall)
+      HALFETI_USER_ERROR("coupling.plate_wall_exchange: implicit converges the plate-wall exchange; it needs "
+                         "coupling.plate_wall: true");
+    if (p.added_mass_kind != CouplingParameters::AddedMass::kNone)
+      HALFETI_USER_ERROR("coupling.added_mass: with plate_wall_exchange: implicit the water's response is converged "
+                         "within the step, not modelled; set coupling.added_mass: none");
+    if (p.implicit.max_iterations < 1)
+      HALFETI_USER_ERROR("coupling.implicit.max_iterations = " << p.implicit.max_iterations << " must be >= 1");
+    if (!(p.implicit.tolerance > 0.0 && p.implicit.tolerance < 1.0))
+      HALFETI_USER_ERROR("coupling.implicit.tolerance = " << p.implicit.tolerance << " must be in (0, 1)");
+    if (!(p.implicit.accelerator.relaxation > 0.0 && p.implicit.accelerator.relaxation <= 1.0))
+      HALFETI_USER_ERROR("coupling.implicit.relaxation = " << p.implicit.accelerator.relaxation
+                                                           << " must be in (0, 1]");
+  }
 }
 
 void SurfacePointLoad::start_step(const Eigen::Vector2d& load, const Eigen::Vector2d& place,
-                                  const Eigen::Matrix2d& added_mass, bool extrapolate) {
+                                  const Eigen::Matrix2d& added_mass, Guess guess) {
   added_mass_ = added_mass;
   rest_ = has_previous_ ? Eigen::Vector2d(2.0 * place - place_) : place;
-  // The plate's trapezoidal step wants the load at mid-step; the water's is from the step's start.
-  force_ = extrapolate && has_previous_ ? Eigen::Vector2d(1.5 * load - 0.5 * previous_) : load;
+  // The explicit exchange's trapezoidal step wants the load at mid-step; the water's is from the step's start. The
+  // converged exchange's starts from the load extrapolated to the step's end.
+  force_ = load;
+  if (has_previous_ && guess == Guess::kMidStep) force_ = 1.5 * load - 0.5 * previous_;
+  if (has_previous_ && guess == Guess::kStepEnd) force_ = 2.0 * load - previous_;
   previous_ = load;
   place_ = place;
   has_previous_ = true;
@@ -46,7 +64,7 @@ const double* SurfacePointLoad::restore_state(const double* state) {
 
 ContactCoupling::ContactCoupling(MPI_Comm world, structure::PlateSolver* solver,
                                  const CouplingParameters& params, int root)
-    : comm_(world), root_(root), solver_(solver), params_(params) {
+    : comm_(world), root_(root), solver_(solver), params_(params), accelerator_(params.implicit.accelerator) {
   validate(params_);
   rank_ = comm_.rank();
   HALFETI_CHECK((rank_ == root_) == (solver_ != nullptr),
@@ -87,8 +105,8 @@ sph::PlateOutline ContactCoupling::plate_outline() const {
   return o;
 }
 
-void ContactCoupling::set_fluid_loads(const std::vector<sph::PlateWallLoad>& local, double dt) {
-  ScopedTimer timer(timers_, "fluid_load");
+std::vector<Eigen::Vector2d> ContactCoupling::gather_point_loads(const std::vector<sph::PlateWallLoad>& local,
+                                                                 bool breakdown) {
   const int size = comm_.size();
   const int n = static_cast<int>(local.size());
   std::vector<int> counts(size), displs(size);
@@ -109,40 +127,65 @@ void ContactCoupling::set_fluid_loads(const std::vector<sph::PlateWallLoad>& loc
   }
   MPI_Gatherv(mine.data(), 4 * n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, root_,
               comm_.get());
-  double sum[2] = {0.0, 0.0};
-  if (rank_ == root_) {
-    std::vector<int> order(total);
-    for (int k = 0; k < total; ++k) order[k] = k;
-    std::sort(order.begin(), order.end(), [&](int a, int b) {
-      return all[4 * a] != all[4 * b] ? all[4 * a] < all[4 * b] : all[4 * a + 1] < all[4 * b + 1];
-    });
-    std::vector<Eigen::Vector2d> load(loads_.size(), Eigen::Vector2d::Zero());
-    const auto& pts = surface_.points;
-    const std::size_t last = pts.size() - 1;
-    // The outward normal at each surface point: from its neighbours (radial at a corner; one segment at the
-    // polyline's ends, the clamped base corners).
-    std::vector<Eigen::Vector2d> normal(pts.size());
-    for (std::size_t k = 0; k <= last; ++k) {
-      const Eigen::Vector2d t = pts[std::min(k + 1, last)] - pts[k == 0 ? 0 : k - 1];
-      normal[k] = Eigen::Vector2d(t.y(), -t.x()).normalized();
-    }
+  std::vector<Eigen::Vector2d> load;
+  if (rank_ != root_) return load;
+  std::vector<int> order(total);
+  for (int k = 0; k < total; ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return all[4 * a] != all[4 * b] ? all[4 * a] < all[4 * b] : all[4 * a + 1] < all[4 * b + 1];
+  });
+  load.assign(loads_.size(), Eigen::Vector2d::Zero());
+  const auto normal = surface_normals();
+  if (breakdown) {
     for (auto& face : breakdown_.wall_push) face[0] = face[1] = 0.0;
     for (auto& face : breakdown_.wall_suction) face[0] = face[1] = 0.0;
-    for (int k : order) {  // gid order: a fixed summation order on any number of ranks
-      const double point = all[4 * k + 1];
-      HALFETI_CHECK(point >= 0.0 && point < static_cast<double>(load.size()),
-                    "plate-wall load of particle " << all[4 * k] << " on outline point " << point << " of "
-                                                   << load.size());
-      const auto p = static_cast<std::size_t>(point);
-      const Eigen::Vector2d f(all[4 * k + 2], all[4 * k + 3]);
-      load[p] += f;
-      // Push: the force on the plate points into it (against the outward normal); suction: out of it.
-      const int face = point_face(static_cast<int>(p));
-      double* part = f.dot(normal[p]) <= 0.0 ? breakdown_.wall_push[face] : breakdown_.wall_suction[face];
-      part[0] += f.x();
-      part[1] += f.y();
-    }
+  }
+  for (int k : order) {  // gid order: a fixed summation order on any number of ranks
+    const double point = all[4 * k + 1];
+    HALFETI_CHECK(point >= 0.0 && point < static_cast<double>(load.size()),
+                  "plate-wall load of particle " << all[4 * k] << " on outline point " << point << " of "
+                                                 << load.size());
+    const auto p = static_cast<std::size_t>(point);
+    const Eigen::Vector2d f(all[4 * k + 2], all[4 * k + 3]);
+    load[p] += f;
+    if (!breakdown) continue;
+    // Push: the force on the plate points into it (against the outward normal); suction: out of it.
+    const int face = point_face(static_cast<int>(p));
+    double* part = f.dot(normal[p]) <= 0.0 ? breakdown_.wall_push[face] : breakdown_.wall_suction[face];
+    part[0] += f.x();
+    part[1] += f.y();
+  }
+  return load;
+}
+
+std::vector<Eigen::Vector2d> ContactCoupling::surface_normals() const {
+  // The outward normal at each surface point: from its neighbours (radial at a corner; one segment at the
+  // polyline's ends, the clamped base corners).
+  const auto& pts = surface_.points;
+  std::vector<Eigen::Vector2d> normal(pts.size());
+  if (pts.empty()) return normal;
+  const std::size_t last = pts.size() - 1;
+  for (std::size_t k = 0; k <= last; ++k) {
+    const Eigen::Vector2d t = pts[std::min(k + 1, last)] - pts[k == 0 ? 0 : k - 1];
+    normal[k] = Eigen::Vector2d(t.y(), -t.x()).normalized();
+  }
+  return normal;
+}
+
+void ContactCoupling::set_fluid_loads(const std::vector<sph::PlateWallLoad>& local, double dt) {
+  ScopedTimer timer(timers_, "fluid_load");
+  const std::vector<Eigen::Vector2d> load = gather_point_loads(local, true);
+  double sum[2] = {0.0, 0.0};
+  if (rank_ == root_) {
+    const auto& pts = surface_.points;
+    const std::size_t last = pts.size() - 1;
+    const auto normal = surface_normals();
     const double mass_per_area = params_.added_mass_per_area(dt);
+    using Guess = SurfacePointLoad::Guess;
+    const Guess guess = params_.plate_wall_exchange == CouplingParameters::PlateWallExchange::kExtrapolated
+                            ? Guess::kMidStep
+                        : params_.implicit_exchange() ? Guess::kStepEnd
+                                                      : Guess::kStart;
     for (std::size_t k = 0; k < loads_.size(); ++k) {
       auto& l = *loads_[k];
       // The interface added mass on this point (sections 13, 15): along its normal, on half of each neighbouring
@@ -152,14 +195,43 @@ void ContactCoupling::set_fluid_loads(const std::vector<sph::PlateWallLoad>& loc
         const double length = 0.5 * ((pts[k] - pts[k - 1]).norm() + (pts[k + 1] - pts[k]).norm());
         added_mass = mass_per_area * length * normal[k] * normal[k].transpose();
       }
-      l.start_step(load[k], pts[k], added_mass, params_.plate_wall_extrapolated);
+      l.start_step(load[k], pts[k], added_mass, guess);
       sum[0] += load[k].x();
       sum[1] += load[k].y();
     }
+    accelerator_.start();
   }
+  exchange_iteration_ = 0;
   MPI_Bcast(sum, 2, MPI_DOUBLE, root_, comm_.get());
   fluid_load_[0] = sum[0];
   fluid_load_[1] = sum[1];
+}
+
+ExchangeIterate ContactCoupling::converge_exchange(const std::vector<sph::PlateWallLoad>& local) {
+  HALFETI_CHECK(params_.implicit_exchange(), "converge_exchange() belongs to plate_wall_exchange: implicit");
+  ScopedTimer timer(timers_, "exchange");
+  const std::vector<Eigen::Vector2d> load = gather_point_loads(local, false);
+  ExchangeIterate out;
+  out.iteration = exchange_iteration_++;
+  double verdict[2] = {0.0, 0.0};  // residual, converged
+  if (rank_ == root_) {
+    const auto n = static_cast<Eigen::Index>(loads_.size());
+    Eigen::VectorXd in(2 * n), produced(2 * n);
+    for (Eigen::Index k = 0; k < n; ++k) {
+      in.segment<2>(2 * k) = loads_[static_cast<std::size_t>(k)]->force();
+      produced.segment<2>(2 * k) = load[static_cast<std::size_t>(k)];
+    }
+    verdict[0] = InterfaceQuasiNewton::residual_ratio(in, produced);
+    verdict[1] = verdict[0] <= params_.implicit.tolerance ? 1.0 : 0.0;
+    if (verdict[1] == 0.0 && exchange_iteration_ < params_.implicit.max_iterations) {
+      const Eigen::VectorXd next = accelerator_.next(in, produced);
+      for (Eigen::Index k = 0; k < n; ++k) loads_[static_cast<std::size_t>(k)]->set_force(next.segment<2>(2 * k));
+    }
+  }
+  MPI_Bcast(verdict, 2, MPI_DOUBLE, root_, comm_.get());
+  out.residual = verdict[0];
+  out.converged = verdict[1] != 0.0;
+  return out;
 }
 
 void ContactCoupling::broadcast_surface() {
@@ -413,7 +485,9 @@ const CouplingStepReport& ContactCoupling::step(double t, double dt, const Inter
     // The surface's velocity for the water is its mean velocity over the step, (x_n+1 - x_n) / dt: the Newmark
     // (trapezoidal) nodal velocity carries the plate's undamped high-frequency content, v_n+1 = 2 (u_n+1 - u_n) /
     // dt - v_n, and fed back through the plate-wall ghosts it grew into a plate-water oscillation (docs/coupling.md).
-    // Extrapolated to the coming step's middle: 2 v_n+1/2 - v_n-1/2.
+    // Explicit exchange: extrapolated to the coming step's middle, 2 v_n+1/2 - v_n-1/2; the converged exchange uses
+    // this step's own motion (Fluid::update_density) and has the faces' velocity in the next force computation lag
+    // half a step (the viscous term only).
     if (before.size() == surface_.points.size()) {
       const bool first = mean_velocity_.size() != 2 * before.size();
       mean_velocity_.resize(2 * before.size());
@@ -421,7 +495,9 @@ const CouplingStepReport& ContactCoupling::step(double t, double dt, const Inter
         for (int c = 0; c < 2; ++c) {
           const double v = (surface_.points[k][c] - before[k][c]) / dt;
           const double old = first ? v : mean_velocity_[2 * k + c];
-          surface_motion_[4 * k + c] = params_.plate_wall_extrapolated ? 2.0 * v - old : v;
+          const bool extrapolate =
+              params_.plate_wall_exchange == CouplingParameters::PlateWallExchange::kExtrapolated;
+          surface_motion_[4 * k + c] = extrapolate ? 2.0 * v - old : v;
           mean_velocity_[2 * k + c] = v;
         }
     }
@@ -475,7 +551,9 @@ void ContactCoupling::restore_state(const std::vector<double>& state) {
   std::copy(p, p + 21, reinterpret_cast<double*>(&breakdown_));
   p += 21;
   const std::size_t loads = take_count(5);
-  if (loads != surface_.points.size())  // one load per surface point (on the root; the count on every rank)
+  // One load per surface point: the root's count (a checkpoint holds the root's copy on every rank), or, for a step
+  // taken back within a run, this rank's own (none off the root).
+  if (loads != surface_.points.size() && loads != loads_.size())
     HALFETI_USER_ERROR("restart: the coupling's state has " << loads << " surface loads, this scene's plate "
                                                             << surface_.points.size());
   if (rank_ == root_) {

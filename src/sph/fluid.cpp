@@ -262,9 +262,10 @@ void Fluid::compute_forces() {
   forces_ready_ = true;
 }
 
-void Fluid::predict() {
+void Fluid::predict(PlateDensity plate) {
   HALFETI_CHECK(forces_ready_, "Fluid::predict() needs compute_forces() first");
   forces_ready_ = false;
+  density_pending_ = plate == PlateDensity::kDeferred;
   {
     ScopedTimer t(timers_, "integrate");
     // Leap-frog in symplectic-Euler form (velocities staggered half a step): kick v += dt (a + Delta C) ...
@@ -292,7 +293,8 @@ void Fluid::predict() {
     const ParticleView pv{x_.data(), y_.data(), vx_.data(), vy_.data(), rho_.data(), mass_.data(), p_.data(),
                           volume_.data(), n_owned_, n_local_};
     continuity_rates(pv, pairs_, ghost_pairs_, ghosts_, grad_rho_, constants_, rates_);
-    if (!plate_wall_.empty()) plate_wall_.continuity(vx_.data(), vy_.data(), rho_.data(), rates_.drho.data());
+    if (!plate_wall_.empty() && !density_pending_)
+      plate_wall_.continuity(vx_.data(), vy_.data(), rho_.data(), rates_.drho.data());
   }
   {
     // ... and drift r += dt (v + XSPH), rho += dt Drho.
@@ -300,7 +302,7 @@ void Fluid::predict() {
     for (int i = 0; i < n_owned_; ++i) {
       x_[i] += dt_ * (vx_[i] + rates_.xsph_x[i]);  // eq. 11
       y_[i] += dt_ * (vy_[i] + rates_.xsph_y[i]);
-      rho_[i] += dt_ * rates_.drho[i];  // eq. 3
+      if (!density_pending_) rho_[i] += dt_ * rates_.drho[i];  // eq. 3
     }
     for (auto* v : {&x_, &y_, &vx_, &vy_, &rho_, &mass_}) v->resize(n_owned_);
     gid_.resize(n_owned_);
@@ -311,9 +313,36 @@ void Fluid::predict() {
   predicted_ = true;
 }
 
+void Fluid::update_density(const PlateOutline& motion) {
+  HALFETI_CHECK(predicted_ && density_pending_, "Fluid::update_density() follows predict(PlateDensity::kDeferred)");
+  density_pending_ = false;
+  ScopedTimer t(timers_, "integrate");
+  if (!plate_wall_.empty()) {
+    plate_wall_.set_wall_velocity(motion);
+    plate_wall_.continuity(vx_.data(), vy_.data(), rho_.data(), rates_.drho.data());
+  }
+  for (int i = 0; i < n_owned_; ++i) rho_[i] += dt_ * rates_.drho[i];  // eq. 3
+}
+
+void Fluid::snapshot(Snapshot& into) const {
+#define HALFETI_FLUID_SAVE(m) \
+  if (into.m) *into.m = m; /* the buffer's capacity reused */ \
+  else into.m.emplace(m);
+  HALFETI_FLUID_STEP_STATE(HALFETI_FLUID_SAVE)
+#undef HALFETI_FLUID_SAVE
+}
+
+void Fluid::rollback(const Snapshot& from) {
+  HALFETI_CHECK(from.x_.has_value(), "Fluid::rollback() needs a snapshot() first");
+#define HALFETI_FLUID_LOAD(m) m = *from.m;
+  HALFETI_FLUID_STEP_STATE(HALFETI_FLUID_LOAD)
+#undef HALFETI_FLUID_LOAD
+}
+
 void Fluid::apply_corrections(const std::vector<int>& touched, const double* dx, const double* dy,
                               const double* dvx, const double* dvy, const double* drho) {
-  HALFETI_CHECK(predicted_, "Fluid::apply_corrections() belongs between predict() and finish()");
+  HALFETI_CHECK(predicted_ && !density_pending_,
+                "Fluid::apply_corrections() belongs between predict() (and update_density()) and finish()");
   ScopedTimer t(timers_, "integrate");
   // The tank's walls bound a correction. The contact solve knows only the plate, and at the plate's foot the face's
   // normal tilts towards the floor as the plate bends (and under a hanging gate's free end it points at the floor):
@@ -343,7 +372,7 @@ void Fluid::apply_corrections(const std::vector<int>& touched, const double* dx,
 }
 
 void Fluid::finish() {
-  HALFETI_CHECK(predicted_, "Fluid::finish() needs predict() first");
+  HALFETI_CHECK(predicted_ && !density_pending_, "Fluid::finish() needs predict() (and update_density()) first");
   predicted_ = false;
   {
     ScopedTimer t(timers_, "health");
@@ -424,7 +453,7 @@ void Fluid::restore(State all) {
   spilled_mass_ = all.spilled_mass;
   events_ = std::move(all.events);
   active_warnings_ = std::move(all.active_warnings);
-  forces_ready_ = predicted_ = false;
+  forces_ready_ = predicted_ = density_pending_ = false;
 }
 
 std::vector<double> Fluid::pressure() const {

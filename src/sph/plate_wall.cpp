@@ -125,6 +125,15 @@ void PlateWall::offset_outline(const PlateOutline& o, double dx) {
   left_start_ -= drop;
 }
 
+void PlateWall::set_wall_velocity(const PlateOutline& motion) {
+  HALFETI_CHECK(static_cast<int>(motion.size()) == corner_points_,
+                "the plate's motion has " << motion.size() << " points, its outline " << corner_points_);
+  for (std::size_t j = 0; j < outline_.size(); ++j) {
+    outline_.vx[j] = motion.vx[static_cast<std::size_t>(point_[j])];
+    outline_.vy[j] = motion.vy[static_cast<std::size_t>(point_[j])];
+  }
+}
+
 std::vector<Barrier> PlateWall::midline() const {
   std::vector<Barrier> out;
   for (int q = 0; q < fibres_; ++q) out.push_back({mid_x_[q], mid_y_[q], mid_x_[q + 1], mid_y_[q + 1]});

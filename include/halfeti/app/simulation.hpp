@@ -54,6 +54,7 @@ class Simulation {
   void announce();
   double advance(double remaining);  // one step of every part; returns the step taken
   double advance_coupled();          // water and plate through contact
+  double advance_coupled_implicit();  // the same, the plate-water exchange converged (simulation_exchange.cpp)
   void sample(double t);
   void prepare_structure();
   void step_structure(double t, double dt);
@@ -98,6 +99,13 @@ class Simulation {
   bool continuing_ = false;   // the restart writes into the folder of the run it continues
   std::string started_utc_;
   double run_start_ = 0.0, earlier_wall_ = 0.0, last_checkpoint_wall_ = 0.0, last_dt_ = 0.0;
+  // The converged exchange (coupling.plate_wall_exchange: implicit): the step's saved start and this run's counts.
+  struct ExchangeCounts {
+    long long steps = 0, evaluations = 0, unconverged = 0;
+    int most = 0;  // evaluations of the step that needed most
+    double worst_residual = 0.0;  // of the steps kept unconverged
+  } exchange_;
+  std::unique_ptr<sph::Fluid::Snapshot> fluid_saved_;
 };
 
 }  // namespace halfeti::app

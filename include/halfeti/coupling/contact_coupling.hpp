@@ -22,6 +22,7 @@
 #include "halfeti/coupling/contact_kinematics.hpp"
 #include "halfeti/coupling/contact_system.hpp"
 #include "halfeti/coupling/interface_exchange.hpp"
+#include "halfeti/coupling/interface_quasi_newton.hpp"
 #include "halfeti/coupling/ssosd.hpp"
 #include "halfeti/sph/neighbour_list.hpp"
 #include "halfeti/sph/plate_wall.hpp"
@@ -56,10 +57,21 @@ struct CouplingParameters {
   // the contact. The moving-face feedback grew into a plate-water oscillation until the interface added mass
   // (added_mass_layer, docs/coupling.md section 13); the paper scenes run with true.
   bool plate_wall_velocity = false;
-  // scene: coupling.plate_wall_exchange: extrapolated (default) hands the plate the water's load extrapolated to
-  // mid-step, 1.5 F_n - 0.5 F_n-1, and the water the face's velocity extrapolated to mid-step, 2 v_n-1/2 - v_n-3/2
-  // (second order in the lag of the explicit exchange); lagged: F_n and v_n-1/2 (docs/coupling.md, section 12).
-  bool plate_wall_extrapolated = true;
+  // scene: coupling.plate_wall_exchange (docs/coupling.md, sections 12 and 16):
+  //   kExtrapolated (default): explicit; the plate gets the water's load extrapolated to mid-step, 1.5 F_n - 0.5
+  //                 F_n-1, and the water the face's velocity extrapolated to mid-step, 2 v_n-1/2 - v_n-3/2;
+  //   kLagged:      explicit; F_n and v_n-1/2 as computed;
+  //   kImplicit:    converged within the step: the plate is solved under the water's load at the step's end,
+  //                 F_n+1, which the water computes with the plate so moved (its density with the faces' motion over
+  //                 the step), iterated to `implicit.tolerance` by interface quasi-Newton.
+  enum class PlateWallExchange { kExtrapolated, kLagged, kImplicit };
+  PlateWallExchange plate_wall_exchange = PlateWallExchange::kExtrapolated;
+  bool implicit_exchange() const { return plate_wall_exchange == PlateWallExchange::kImplicit; }
+  struct ImplicitExchange {
+    int max_iterations = 20;   // scene: coupling.implicit.max_iterations, evaluations of the water's load a step
+    double tolerance = 1e-4;   // scene: coupling.implicit.tolerance, ||F_out - F_in|| / ||F_out|| over the surface
+    InterfaceQuasiNewtonOptions accelerator;  // scene: coupling.implicit.{acceleration, relaxation}
+  } implicit;
   // scene: coupling.added_mass: the water's mass the plate's faces carry in the plate's step, normal to the face,
   // on the step's change of velocity (docs/coupling.md, sections 13 and 15):
   //   kAcoustic: rho0 c0 dt per face area, the water a pressure wave reaches within the step: the face's change of
@@ -101,6 +113,13 @@ struct CouplingStepReport {
   int released = 0;        // invaders released by the unilateral active set (they keep their predicted state)
 };
 
+// The converged exchange's verdict on one evaluation of the water's load (every rank the same).
+struct ExchangeIterate {
+  int iteration = 0;       // 0 for the step's first evaluation
+  double residual = 0.0;   // ||F_out - F_in|| / ||F_out|| over the surface points
+  bool converged = false;  // residual <= implicit.tolerance
+};
+
 // The water's force on the plate over the last step, by where and how it acts (docs/coupling.md, section 15): the
 // plate-wall ghosts' load (what the plate is handed at the step's start, before any extrapolation), split into the
 // parts that push into a face and those that pull it outwards (suction: the ghosts continue a particle's pressure,
@@ -125,10 +144,12 @@ class SurfacePointLoad : public NodalElement {
  public:
   explicit SurfacePointLoad(int node) : node_(node) {}
   // At the start of a step: the water's load on the point from the step's start (N/m), the point's place then, its
-  // added mass (kg/m, m_a n n^T times its share of the face). extrapolate: the load used is 1.5 F_n - 0.5 F_n-1
-  // (mid-step, once a previous load exists), else F_n.
+  // added mass (kg/m, m_a n n^T times its share of the face). The load used, once a previous load exists:
+  // kStart F_n, kMidStep 1.5 F_n - 0.5 F_n-1, kStepEnd 2 F_n - F_n-1 (the converged exchange's first iterate).
+  enum class Guess { kStart, kMidStep, kStepEnd };
   void start_step(const Eigen::Vector2d& load, const Eigen::Vector2d& place, const Eigen::Matrix2d& added_mass,
-                  bool extrapolate);
+                  Guess guess);
+  void set_force(const Eigen::Vector2d& force) { force_ = force; }  // an iterate of the converged exchange
   void set_time_step(double dt) { stiffness_ = added_mass_ / (dt * dt); }
   const Eigen::Vector2d& force() const { return force_; }
   // The force the point gets at place x over the step: the water's load and the added mass's spring.
@@ -175,6 +196,11 @@ class ContactCoupling {
   // the next step() of length dt: gathered to the root, summed per surface point in (gid, point) order
   // (rank-independent).
   void set_fluid_loads(const std::vector<sph::PlateWallLoad>& local, double dt);
+  // Collective, with plate_wall_exchange: implicit: the water's plate-wall loads computed after a step() with the
+  // plate as that step left it (F_out). Compares them with the loads the step was solved under (F_in); if they
+  // differ by more than the tolerance, sets the next iterate's loads for a repeat of the step (after the caller has
+  // put the plate, the cables, the water and this object back with restore_state(), which leaves these loads).
+  ExchangeIterate converge_exchange(const std::vector<sph::PlateWallLoad>& local);
   double fluid_load_x() const { return fluid_load_[0]; }  // N/m, total on the plate, every rank
   double fluid_load_y() const { return fluid_load_[1]; }
   const SurfacePolyline& surface() const { return surface_; }
@@ -193,6 +219,10 @@ class ContactCoupling {
 
  private:
   void broadcast_surface();
+  // Root: the loads of every rank's particles summed per surface point in (gid, point) order; with `breakdown`, the
+  // push / suction split of each face into breakdown_.
+  std::vector<Eigen::Vector2d> gather_point_loads(const std::vector<sph::PlateWallLoad>& local, bool breakdown);
+  std::vector<Eigen::Vector2d> surface_normals() const;  // outward, per surface point
   // The face (PlateLoadBreakdown::Face) of surface point k and of segment s = (k, k + 1), from the corners at rest.
   int point_face(int k) const { return k < corners_[0] ? first_face_ : k > corners_[1] ? second_face_ : PlateLoadBreakdown::kTop; }
   int segment_face(int s) const { return s < corners_[0] ? first_face_ : s >= corners_[1] ? second_face_ : PlateLoadBreakdown::kTop; }
@@ -213,6 +243,8 @@ class ContactCoupling {
   std::vector<Eigen::Vector2d> nodal_force_[3], previous_force_[3];
   std::vector<double> surface_motion_;             // every rank: vx, vy, ax, ay per surface point
   std::vector<double> mean_velocity_;              // every rank: vx, vy per surface point over the last step
+  InterfaceQuasiNewton accelerator_{InterfaceQuasiNewtonOptions{}};  // root: the converged exchange's iterations
+  int exchange_iteration_ = 0;
   double thickness_ = 0.0;  // m, the plate's: bounds how deep inside an invader can be found
   structure::PlateSolver* solver_;
   CouplingParameters params_;

@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "halfeti/core/communicator.hpp"
@@ -42,8 +43,15 @@ class Fluid {
   // advance() in two halves, for the contact coupling between them (DESIGN.md steps 2 and 6): predict() kicks,
   // updates the density and drifts (time += dt); finish() checks health, rebalances and migrates. Between them
   // the owned particles keep their indices, so per-particle corrections can be applied.
-  void predict();
+  // With PlateDensity::kDeferred, predict() leaves the density at the step's start and update_density() advances it
+  // with the plate wall's term at the faces' velocities of `motion`: the converged plate-water exchange knows the
+  // plate's motion over the step only after the coupling (docs/coupling.md, section 16). The same arithmetic as
+  // predict() alone when the velocities are the same. Between predict() and apply_corrections().
+  enum class PlateDensity { kWithStep, kDeferred };
+  void predict(PlateDensity plate = PlateDensity::kWithStep);
+  void update_density(const PlateOutline& motion);
   void finish();
+  bool forces_ready() const { return forces_ready_; }  // compute_forces() done for the present particles
   // Adds the coupling's corrections (position, velocity, density: eqs. 4, 22, 24) to the owned particles listed
   // in `touched`; each array holds one entry per owned particle.
   void apply_corrections(const std::vector<int>& touched, const double* dx, const double* dy, const double* dvx,
@@ -117,7 +125,15 @@ class Fluid {
     std::vector<std::string> active_warnings;
   };
   State state() const;  // (taken inside a step, at a failure, it is for inspection: between_steps() is false)
-  bool between_steps() const { return !forces_ready_ && !predicted_; }
+  // At a step boundary (the forces of the next step may already be computed: they follow from the state).
+  bool between_steps() const { return !predicted_; }
+
+  // ---- a step taken back (the converged plate-water exchange's iterations) ----
+  // Everything a step changes (particles, their order and owners, neighbours, halo, rates, clock, health log),
+  // copied into a reusable buffer and put back: the step then repeats bit for bit. The timers are not put back.
+  struct Snapshot;
+  void snapshot(Snapshot& into) const;
+  void rollback(const Snapshot& from);
   void restore(State all);  // collective; the particles partitioned afresh over this run's ranks
   // Cell -> owning rank map of the current decomposition (diagnostics of the balance).
   const std::vector<int>& cell_owner() const { return owner_; }
@@ -172,10 +188,23 @@ class Fluid {
 
   double time_ = 0.0, dt_ = 0.0;
   long step_ = 0;
-  bool forces_ready_ = false, predicted_ = false;
+  bool forces_ready_ = false, predicted_ = false, density_pending_ = false;
   PhaseTimers timers_;
   std::vector<HealthEvent> events_;
   std::vector<std::string> active_warnings_;
+
+ public:
+// The members a step changes, listed once for the snapshot's copy both ways.
+#define HALFETI_FLUID_STEP_STATE(X)                                                                                  \
+  X(owner_) X(halo_plan_) X(search_) X(pairs_) X(wall_pairs_) X(ghost_pairs_) X(n_owned_) X(n_local_) X(n_global_)  \
+  X(spilled_mass_) X(gid_) X(x_) X(y_) X(vx_) X(vy_) X(rho_) X(mass_) X(p_) X(volume_) X(cell_) X(grad_rho_)        \
+  X(rates_) X(constants_) X(extra_ax_) X(extra_ay_) X(plate_wall_) X(time_) X(dt_) X(step_) X(forces_ready_)         \
+  X(predicted_) X(density_pending_) X(events_) X(active_warnings_)
+  struct Snapshot {
+#define HALFETI_FLUID_DECLARE(m) std::optional<decltype(Fluid::m)> m;  // (some members have no default constructor)
+    HALFETI_FLUID_STEP_STATE(HALFETI_FLUID_DECLARE)
+#undef HALFETI_FLUID_DECLARE
+  };
 };
 
 }  // namespace halfeti::sph

@@ -59,6 +59,9 @@ class PlateWall {
   // The offsets apply to every outline set after this call.
   void set_offsets(const LatticeOffsets& offsets) { offsets_ = offsets; }
   void set_outline(const PlateOutline& outline, double dx, double support);
+  // The faces' velocities only (the true outline's points, as set_outline() takes them): the positions, ghosts and
+  // pairs stay. The converged exchange sets the plate's motion over a step after the step's pairs were found.
+  void set_wall_velocity(const PlateOutline& motion);
   bool empty() const { return outline_.size() < 2; }
   // The mid-line of the plate as the lattice sees it, base to top: the barrier between the two sides.
   std::vector<Barrier> midline() const;

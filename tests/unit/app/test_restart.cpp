@@ -34,6 +34,13 @@ const Case kCoupled{test::source_path("inputs/paper/cosine_cable.yaml"),
                     "--set fluid.spacing=0.006 --set output.field_interval=0.05 --set output.checkpoint_keep=0", 0.1,
                     0.05};
 
+// The same with the plate-water exchange converged within each step and the trapezoidal rule (docs/coupling.md,
+// section 16): a step repeated from its saved start, and the forces of the next step computed at this one's end.
+const Case kImplicit{kCoupled.scene,
+                     kCoupled.args + " --set coupling.plate_wall_exchange=implicit --set coupling.added_mass=none"
+                                     " --set structure.newmark_gamma=0.5 --set structure.newmark_beta=0.25",
+                     0.1, 0.05};
+
 std::string end_time(double t) { return " --set scene.end_time=" + std::to_string(t); }
 
 std::string latest(const std::string& run) {
@@ -116,6 +123,15 @@ TEST(Restart, WaterAloneContinuesBitForBitOnOtherRankCounts) { expect_restarts_b
 
 TEST(Restart, CoupledSceneWithCablesContinuesBitForBitOnOtherRankCounts) {
   expect_restarts_bit_for_bit(kCoupled, "coupled");
+}
+
+TEST(Restart, ConvergedExchangeContinuesBitForBitOnOtherRankCounts) {
+  expect_restarts_bit_for_bit(kImplicit, "implicit");
+  // It iterated: more than one evaluation of the water's load in some step.
+  const std::string s = test::read_text(test::binary_path("restart_implicit_ref") + "/summary.json");
+  const auto at = s.find("\"most_in_a_step\": ");
+  ASSERT_NE(at, std::string::npos) << "summary.json has no exchange counts";
+  EXPECT_GT(std::stoi(s.substr(at + 18)), 1);
 }
 
 TEST(Restart, MaxWallStopsResumablyAndTheRunContinuesInItsOwnFolder) {

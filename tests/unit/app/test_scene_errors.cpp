@@ -84,8 +84,8 @@ const Case kCases[] = {
      "bad.yaml:2:30: coupling.added_mass_layer: expected a number in [0, 4] (dx), found '5'"},
     {"unknown interface added mass", "scene: {name: s, end_time: 1}\ncoupling: {added_mass: implicit}\n",
      "bad.yaml:2:24: coupling.added_mass: expected one of acoustic, layer, none, found 'implicit'"},
-    {"unknown plate-water exchange", "scene: {name: s, end_time: 1}\ncoupling: {plate_wall_exchange: implicit}\n",
-     "bad.yaml:2:33: coupling.plate_wall_exchange: expected one of extrapolated, lagged, found 'implicit'"},
+    {"unknown plate-water exchange", "scene: {name: s, end_time: 1}\ncoupling: {plate_wall_exchange: converged}\n",
+     "bad.yaml:2:33: coupling.plate_wall_exchange: expected one of extrapolated, lagged, implicit, found 'converged'"},
     {"broken YAML", "scene: {name: s, end_time: 1\n", "bad.yaml:2:1: not valid YAML: end of map flow not found"},
     {"not a mapping", "- a\n- b\n",
      "bad.yaml: a scene is a YAML mapping of sections (scene:, fluid:, ...), found something else"},
@@ -174,6 +174,15 @@ TEST(SceneErrors, ChecksAcrossKeysNameTheFileAndKey) {
        "fluid: {spacing: 0.005, water: [{from: [0, 0], to: [0.3, 0.1]}]}\nstructure: {base: [0.15, 0]}\n"
        "probes: [{name: c, kind: plate_load, part: contact, sign: push, component: x}]\n",
        "probes[0].sign: 'push' splits the plate-wall part only; the contact only pushes"},
+      // The converged exchange replaces the interface added mass; it needs the plate in the water's sums.
+      {"scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
+       "fluid: {spacing: 0.005, water: [{from: [0, 0], to: [0.3, 0.1]}]}\nstructure: {base: [0.15, 0]}\n"
+       "coupling: {plate_wall_exchange: implicit}\n",
+       "coupling.added_mass: with plate_wall_exchange: implicit the water's response is converged within the step"},
+      {"scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
+       "fluid: {spacing: 0.005, water: [{from: [0, 0], to: [0.3, 0.1]}]}\nstructure: {base: [0.15, 0]}\n"
+       "coupling: {plate_wall_exchange: implicit, added_mass: none, plate_wall: false}\n",
+       "coupling.plate_wall_exchange: implicit converges the plate-wall exchange; it needs coupling.plate_wall: true"},
       // A cable's anchor is on the tank: not outside it, not in mid-water.
       {"scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\nstructure: {base: [0.15, 0], time_step: 0.001}\n"
        "cables: [{name: a, anchor: [-1e300, 0.01], node: top_left, area: 1e-6, modulus: 1e6, density: 1000, "

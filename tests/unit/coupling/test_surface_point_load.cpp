@@ -24,12 +24,15 @@ TEST(SurfacePointLoad, ExtrapolatesTheWatersLoadToMidStep) {
   SurfacePointLoad l(3);
   EXPECT_EQ(l.nodes(), std::vector<int>{3});
   const Eigen::Vector2d x(0.15, 0.05);
-  l.start_step(Eigen::Vector2d(1.0, -2.0), x, Eigen::Matrix2d::Zero(), true);
+  l.start_step(Eigen::Vector2d(1.0, -2.0), x, Eigen::Matrix2d::Zero(), SurfacePointLoad::Guess::kMidStep);
   EXPECT_EQ(l.force(), Eigen::Vector2d(1.0, -2.0));  // no previous load: as computed
-  l.start_step(Eigen::Vector2d(2.0, -1.0), x, Eigen::Matrix2d::Zero(), true);
+  l.start_step(Eigen::Vector2d(2.0, -1.0), x, Eigen::Matrix2d::Zero(), SurfacePointLoad::Guess::kMidStep);
   EXPECT_EQ(l.force(), Eigen::Vector2d(2.5, -0.5));  // 1.5 F_n - 0.5 F_n-1
-  l.start_step(Eigen::Vector2d(4.0, 0.0), x, Eigen::Matrix2d::Zero(), false);
+  l.start_step(Eigen::Vector2d(4.0, 0.0), x, Eigen::Matrix2d::Zero(), SurfacePointLoad::Guess::kStart);
   EXPECT_EQ(l.force(), Eigen::Vector2d(4.0, 0.0));  // lagged
+  l.start_step(Eigen::Vector2d(5.0, 1.0), x, Eigen::Matrix2d::Zero(), SurfacePointLoad::Guess::kStepEnd);
+  EXPECT_EQ(l.force(), Eigen::Vector2d(6.0, 2.0));  // 2 F_n - F_n-1, the converged exchange's first iterate
+  l.start_step(Eigen::Vector2d(4.0, 0.0), x, Eigen::Matrix2d::Zero(), SurfacePointLoad::Guess::kStart);
   l.set_time_step(kDt);
   EXPECT_EQ(evaluate(l, x + Eigen::Vector2d(1e-3, 0.0)), Eigen::Vector2d(-4.0, 0.0));  // no added mass: a dead load
 }
@@ -39,7 +42,7 @@ TEST(SurfacePointLoad, AddedMassResistsAccelerationNormalToTheFaceOnly) {
   const Eigen::Matrix2d added = kMass * n * n.transpose();
   const Eigen::Vector2d load(0.3, -0.1), x0(0.1515, 0.04), v(0.2, -0.05);
   SurfacePointLoad l(7);
-  for (int step = 0; step < 3; ++step) l.start_step(load, x0 + step * kDt * v, added, false);
+  for (int step = 0; step < 3; ++step) l.start_step(load, x0 + step * kDt * v, added, SurfacePointLoad::Guess::kStart);
   l.set_time_step(kDt);
   const Eigen::Vector2d x_n = x0 + 2 * kDt * v;
   // Constant velocity: the load alone (to the round-off of positions ~0.15 m over dt^2: 1e-17 m / 6e-10 s^2).
@@ -69,7 +72,7 @@ TEST(SurfacePointLoad, AcousticAddedMassIsTheWatersImpedance) {
     EXPECT_DOUBLE_EQ(p.added_mass_per_area(dt), 1000.0 * 35.0 * dt);
     const Eigen::Matrix2d added = p.added_mass_per_area(dt) * area * n * n.transpose();
     SurfacePointLoad l(2);
-    for (int step = 0; step < 2; ++step) l.start_step(Eigen::Vector2d::Zero(), x0 + step * dt * v, added, false);
+    for (int step = 0; step < 2; ++step) l.start_step(Eigen::Vector2d::Zero(), x0 + step * dt * v, added, SurfacePointLoad::Guess::kStart);
     l.set_time_step(dt);
     const Eigen::Vector2d x_n = x0 + dt * v;
     // v_n+1/2 = v + dv: the internal-force convention gives +rho0 c0 A (dv . n) n (the plate feels minus it).
