@@ -58,8 +58,9 @@ std::shared_ptr<Schema> implicit_schema() {
       "Each step repeats the plate's solve and the water's force computation until the water's load on the plate "
       "at the step's end agrees with the load the plate was solved under.");
   s->add(Key::integer("max_iterations",
-                      "evaluations of the water's load per step at most (each costs a step's force computation); a "
-                      "step that reaches it unconverged is kept, counted and warned")
+                      "evaluations of the water's load per step at most (each costs a step's force computation). An "
+                      "iteration that reaches it, or stalls (3 evaluations without a new best), ends with its best "
+                      "iterate (one evaluation more if that was not the last), counted and warned")
              .def(20)
              .in(1, 1000));
   s->add(Key::real("tolerance", "||F_out - F_in|| / ||F_out|| over the plate's surface points at which a step is "

@@ -12,6 +12,7 @@
 //            forces at t_n+1 with the plate there                            F_out
 //            |F_out - F_in| <= tol |F_out|: done (the forces serve the next step)
 //            else F_in = IQN-ILS(F_in, F_out), everything put back, again
+//   (a stalled iteration ends with its best iterate: ContactCoupling::converge_exchange)
 //
 // With the plate solved under F_n+1 the trapezoidal rule's step is the plate's own (its work the trapezoid of F_n
 // and F_n+1), and the water's continuity sees the plate's actual motion: the exchange adds no energy of its own.
@@ -79,7 +80,7 @@ double Simulation::advance_coupled_implicit() {
       ScopedTimer timer(timers_, "coupling");
       verdict = c.converge_exchange(f.plate_wall_loads());
     }
-    if (verdict.converged || k + 1 >= c.parameters().implicit.max_iterations) break;
+    if (verdict.accepted) break;
   }
   const int evaluations = verdict.iteration + 1;
   ++exchange_.steps;

@@ -118,6 +118,7 @@ struct ExchangeIterate {
   int iteration = 0;       // 0 for the step's first evaluation
   double residual = 0.0;   // ||F_out - F_in|| / ||F_out|| over the surface points
   bool converged = false;  // residual <= implicit.tolerance
+  bool accepted = false;   // the step is taken with this iterate (converged, or the best of a stalled iteration)
 };
 
 // The water's force on the plate over the last step, by where and how it acts (docs/coupling.md, section 15): the
@@ -200,6 +201,8 @@ class ContactCoupling {
   // plate as that step left it (F_out). Compares them with the loads the step was solved under (F_in); if they
   // differ by more than the tolerance, sets the next iterate's loads for a repeat of the step (after the caller has
   // put the plate, the cables, the water and this object back with restore_state(), which leaves these loads).
+  // An iteration that stalls (3 evaluations without a new best) or reaches max_iterations ends with its best
+  // iterate, evaluated once more if it was not the last; `accepted` says the step is taken as it stands.
   ExchangeIterate converge_exchange(const std::vector<sph::PlateWallLoad>& local);
   double fluid_load_x() const { return fluid_load_[0]; }  // N/m, total on the plate, every rank
   double fluid_load_y() const { return fluid_load_[1]; }
@@ -244,7 +247,10 @@ class ContactCoupling {
   std::vector<double> surface_motion_;             // every rank: vx, vy, ax, ay per surface point
   std::vector<double> mean_velocity_;              // every rank: vx, vy per surface point over the last step
   InterfaceQuasiNewton accelerator_{InterfaceQuasiNewtonOptions{}};  // root: the converged exchange's iterations
-  int exchange_iteration_ = 0;
+  int exchange_iteration_ = 0, best_iteration_ = 0;
+  double best_residual_ = 0.0;
+  Eigen::VectorXd best_input_;
+  bool returning_to_best_ = false;
   double thickness_ = 0.0;  // m, the plate's: bounds how deep inside an invader can be found
   structure::PlateSolver* solver_;
   CouplingParameters params_;
