@@ -50,7 +50,9 @@ double Simulation::advance_coupled_implicit() {
     ScopedTimer timer(timers_, "exchange_save");
     f.rollback(*fluid_saved_);
     collective_outcome(comm_, 0, parts_.structure_rank, [&] {
+      const Eigen::VectorXd attempt = parts_.plate->displacement();  // the next attempt's first Newton iterate
       parts_.plate->restore_state(plate_saved);
+      parts_.plate->set_next_predictor(attempt);
       std::size_t used = 0;
       for (auto& cable : parts_.cables) used += cable->restore_state(cables_saved.data() + used, cables_saved.size() - used);
     });
@@ -97,6 +99,8 @@ double Simulation::advance_coupled_implicit() {
       log_->line(line.str());
     }
     ++exchange_.unconverged;
+    const double r = verdict.residual;
+    ++exchange_.decades[r < 1e-3 ? 0 : r < 1e-2 ? 1 : r < 0.1 ? 2 : 3];
     exchange_.worst_residual = std::max(exchange_.worst_residual, verdict.residual);
   }
   if (options_.trace_coupling) trace_coupled_step();

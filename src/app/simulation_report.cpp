@@ -150,6 +150,11 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
       ex.set("evaluations_per_step", e.steps > 0 ? io::Json(double(e.evaluations) / double(e.steps)) : io::Json());
       ex.set("most_in_a_step", e.most).set("unconverged_steps", e.unconverged);
       ex.set("worst_unconverged_residual", e.unconverged > 0 ? io::Json(e.worst_residual) : io::Json());
+      // The steps kept unconverged by their residual: below 1e-3, 1e-3 to 1e-2, 1e-2 to 0.1, 0.1 and above (a
+      // tolerance below 1e-4 counts its near misses in the first).
+      io::Json decades = io::Json::array();
+      for (long long n : e.decades) decades.push(n);
+      ex.set("unconverged_by_residual", decades);
       j.set("exchange", ex);
     }
     j.set("max_density_variation", parts_.fluid ? io::Json(max_density_variation_) : io::Json());

@@ -64,7 +64,8 @@ const double* SurfacePointLoad::restore_state(const double* state) {
 
 ContactCoupling::ContactCoupling(MPI_Comm world, structure::PlateSolver* solver,
                                  const CouplingParameters& params, int root)
-    : comm_(world), root_(root), solver_(solver), params_(params), accelerator_(params.implicit.accelerator) {
+    : comm_(world), root_(root), solver_(solver), params_(params) {
+  accelerator_ = InterfaceQuasiNewton(params_.implicit.accelerator);
   validate(params_);
   rank_ = comm_.rank();
   HALFETI_CHECK((rank_ == root_) == (solver_ != nullptr),

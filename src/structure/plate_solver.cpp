@@ -223,10 +223,19 @@ void PlateSolver::begin_step(double t, double dt) {
   // Predictor u = u_n: robust when a_n holds stiff high-frequency content (a load just released), where the
   // constant-acceleration guess u_n + dt v_n + dt^2/2 a_n can overshoot into inverted elements.
   u_ = u_n_;
+  if (next_predictor_.size() == u_.size()) u_ = next_predictor_;
+  next_predictor_.resize(0);
   compute_external(t + dt);
   first_residual_norm_ = -1.0;
   increment_norm_ = -1.0;
   last_ = StepReport{};
+}
+
+void PlateSolver::set_next_predictor(const Eigen::VectorXd& u) {
+  HALFETI_CHECK(u.size() == dof_count(), "plate predictor of " << u.size() << " values for " << dof_count() << " dofs");
+  next_predictor_ = u;
+  for (int node = 0; node < node_count(); ++node)  // the clamped rows keep their prescribed (zero) displacement
+    if (clamped_[node]) next_predictor_.segment<2>(2 * node) = u_.segment<2>(2 * node);
 }
 
 void PlateSolver::begin_static(double t) {

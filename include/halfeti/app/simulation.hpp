@@ -104,6 +104,7 @@ class Simulation {
     long long steps = 0, evaluations = 0, unconverged = 0;
     int most = 0;  // evaluations of the step that needed most
     double worst_residual = 0.0;  // of the steps kept unconverged
+    long long decades[4] = {0, 0, 0, 0};  // steps kept with residual in [1e-4, 1e-3), [1e-3, 1e-2), [1e-2, 0.1), >= 0.1
   } exchange_;
   std::unique_ptr<sph::Fluid::Snapshot> fluid_saved_;
 };

@@ -140,6 +140,9 @@ class PlateSolver {
 
   // ---- one Newton iteration in public pieces (for the contact coupling, eq. 21) ----
   void begin_step(double t, double dt);  // dynamic: predictor, loads at t + dt
+  // The next begin_step()'s first Newton iterate instead of u_n (once): a repeat of a step from its saved start (the
+  // converged plate-water exchange) starts from the last attempt's displacement. dof_count() entries.
+  void set_next_predictor(const Eigen::VectorXd& u);
   void begin_static(double t);           // no inertia
   void assemble_newton_system();         // into newton_matrix() / newton_residual()
   // Adds K_eff and r at rows/columns offset + petsc_dof() of a caller's matrix and vector (ADD_VALUES, no
@@ -179,6 +182,7 @@ class PlateSolver {
 
  private:
   enum class Mode { kDynamic, kStatic, kInitialAcceleration };
+  Eigen::VectorXd next_predictor_;  // empty: u_n
   void build_matrix();
   void prepare_matrix();  // builds the pattern and the scatter map when nodal elements changed it
   void build_scatter_map();
