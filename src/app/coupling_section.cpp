@@ -65,7 +65,7 @@ std::shared_ptr<Schema> implicit_schema() {
              .in(1, 1000));
   s->add(Key::real("tolerance", "||F_out - F_in|| / ||F_out|| over the plate's surface points at which a step is "
                                 "converged")
-             .def(1e-4)
+             .def(1e-3)
              .in(1e-12, 0.5));
   s->add(Key::choice("acceleration",
                      "iqn_ils (interface quasi-Newton, least-squares inverse Jacobian: Degroote et al. 2009) or "

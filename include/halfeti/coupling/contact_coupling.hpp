@@ -69,7 +69,7 @@ struct CouplingParameters {
   bool implicit_exchange() const { return plate_wall_exchange == PlateWallExchange::kImplicit; }
   struct ImplicitExchange {
     int max_iterations = 20;   // scene: coupling.implicit.max_iterations, evaluations of the water's load a step
-    double tolerance = 1e-4;   // scene: coupling.implicit.tolerance, ||F_out - F_in|| / ||F_out|| over the surface
+    double tolerance = 1e-3;   // scene: coupling.implicit.tolerance, ||F_out - F_in|| / ||F_out|| over the surface
     InterfaceQuasiNewtonOptions accelerator;  // scene: coupling.implicit.{acceleration, relaxation}
   } implicit;
   // scene: coupling.added_mass: the water's mass the plate's faces carry in the plate's step, normal to the face,
