@@ -163,6 +163,12 @@ void Simulation::step_structure(double t, double dt) {
   });
 }
 
+coupling::InterfaceParticles Simulation::interface_of(const sph::Fluid& f) {
+  const auto& grad = f.renormalised_density_gradient();
+  return {f.owned_count(), f.gid().data(), f.x().data(),    f.y().data(), f.vx().data(),
+          f.vy().data(),   f.mass().data(), grad.empty() ? nullptr : grad.data()};
+}
+
 // One coupled step (DESIGN.md "One time step"): fluid forces and prediction, the interface gathered to the plate's
 // rank, the plate and the invaders solved together (eq. 21), the corrections handed back (eqs. 4, 22-24), then
 // the fluid finishes its step (health, migration) and the plate's new outline bars pairs across it.
@@ -175,13 +181,9 @@ double Simulation::advance_coupled() {
   if (plate_wall) parts_.coupling->set_fluid_loads(f.plate_wall_loads(), dt);  // the water's wall force on the plate
   f.predict();
   if (parts_.plate) load_cables(t + dt);
-  const coupling::InterfaceParticles view{f.owned_count(), f.gid().data(),  f.x().data(),
-                                          f.y().data(),    f.vx().data(),   f.vy().data(),
-                                          f.mass().data(),
-                                          f.renormalised_density_gradient().empty() ? nullptr : f.renormalised_density_gradient().data()};
   {
     ScopedTimer timer(timers_, "coupling");
-    parts_.coupling->step(t, dt, view, parts_.corrections);
+    parts_.coupling->step(t, dt, interface_of(f), parts_.corrections);
   }
   const auto& c = parts_.corrections;
   f.apply_corrections(c.touched, c.dx.data(), c.dy.data(), c.dvx.data(), c.dvy.data(), c.drho.data());

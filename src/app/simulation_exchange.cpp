@@ -63,13 +63,9 @@ double Simulation::advance_coupled_implicit() {
   for (int k = 0;; ++k) {
     if (k > 0) put_back();
     f.predict(sph::Fluid::PlateDensity::kDeferred);
-    const coupling::InterfaceParticles view{f.owned_count(), f.gid().data(),  f.x().data(),
-                                            f.y().data(),    f.vx().data(),   f.vy().data(),
-                                            f.mass().data(),
-                                            f.renormalised_density_gradient().empty() ? nullptr : f.renormalised_density_gradient().data()};
     {
       ScopedTimer timer(timers_, "coupling");
-      c.step(t, dt, view, parts_.corrections);
+      c.step(t, dt, interface_of(f), parts_.corrections);
     }
     const sph::PlateOutline moved = c.plate_outline();  // the faces' motion over this step
     f.update_density(moved);
@@ -89,8 +85,7 @@ double Simulation::advance_coupled_implicit() {
   exchange_.evaluations += evaluations;
   exchange_.most = std::max(exchange_.most, evaluations);
   if (!verdict.converged) {
-    if (exchange_.unconverged == 0)
-    {
+    if (exchange_.unconverged == 0) {  // said once; the rest are counted
       std::ostringstream line;
       line.precision(9);
       line << "warning: the plate-water exchange did not converge in the step to t = " << t + dt << " s: residual "

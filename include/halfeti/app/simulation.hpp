@@ -55,6 +55,7 @@ class Simulation {
   double advance(double remaining);  // one step of every part; returns the step taken
   double advance_coupled();          // water and plate through contact
   double advance_coupled_implicit();  // the same, the plate-water exchange converged (simulation_exchange.cpp)
+  static coupling::InterfaceParticles interface_of(const sph::Fluid& f);  // the owned particles, for the coupling
   void sample(double t);
   void prepare_structure();
   void step_structure(double t, double dt);
