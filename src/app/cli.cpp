@@ -14,7 +14,8 @@ std::string usage_text() {
 usage:
   halfeti run SCENE.yaml [--set key.path=value ...] [--out DIR] [--restart PATH] [--overwrite]
               [--max-wall SECONDS] [--trace coupling] [-- PETSc options]
-  halfeti check SCENE.yaml [--set key.path=value ...]
+              [--max-memory SIZE]
+  halfeti check SCENE.yaml [--set key.path=value ...] [--max-memory SIZE]
   halfeti cable --from X1,Y1 --to X2,Y2 --modulus E --area A --density RHO
                 (--unstretched-length L0 | --tension-stress S) [...]   (halfeti cable --help)
   halfeti compare RUN --probe NAME --metric METRIC [--reference FILE ...]   (halfeti compare --help)
@@ -33,12 +34,35 @@ compare  one error metric of a run's probe against reference data (RMS, peak, fr
 --overwrite  replaces another run's outputs in DIR (a run refuses a folder that holds them otherwise)
 --max-wall   stops at a step boundary, with a checkpoint, before SECONDS of wall time (as SIGTERM, SIGINT and
          SIGUSR1 do at any time), with exit status 5
+--max-memory  refuses (exit status 2) a scene whose estimated memory on its busiest rank exceeds SIZE (e.g. 8G,
+         512M, 2GiB; default: the machine's memory); `check` prints the estimate
 --trace coupling  a diagnostic line per coupled step and per invader on stderr (the contact's and the plate-wall
          forces, the fastest particle; docs/coupling.md's noise figures)
 
 exit status: 0 success, 2 bad input (scene, file, option), 3 numerical failure, 4 internal error, 5 stopped by a
 signal or --max-wall (resumable with --restart), 6 an output could not be written (disk full, permission).
 )";
+}
+
+double parse_memory_size(const std::string& text, const char* option) {
+  char* end = nullptr;
+  const double number = std::strtod(text.c_str(), &end);
+  std::string unit(end ? end : "");
+  if (!unit.empty() && (unit.back() == 'B' || unit.back() == 'b')) unit.pop_back();
+  double scale = 0.0;
+  if (unit.empty()) scale = 1.0;
+  else if (unit == "k" || unit == "K") scale = 1e3;
+  else if (unit == "M") scale = 1e6;
+  else if (unit == "G") scale = 1e9;
+  else if (unit == "T") scale = 1e12;
+  else if (unit == "Ki") scale = 1024.0;
+  else if (unit == "Mi") scale = 1024.0 * 1024.0;
+  else if (unit == "Gi") scale = 1024.0 * 1024.0 * 1024.0;
+  else if (unit == "Ti") scale = 1024.0 * 1024.0 * 1024.0 * 1024.0;
+  const double bytes = number * scale;
+  if (end == text.c_str() || scale == 0.0 || !(bytes >= 1.0) || !std::isfinite(bytes))
+    HALFETI_USER_ERROR(option << " takes a memory size such as 8G, 512M or 2GiB, got '" << text << "'");
+  return bytes;
 }
 
 std::string version_text() { return std::string("halfeti ") + kVersion; }
@@ -103,6 +127,8 @@ Command parse_command_line(const std::vector<std::string>& args) {
       c.max_wall = std::strtod(v.c_str(), &end);
       if (end == v.c_str() || *end != '\0' || !(c.max_wall > 0.0) || !std::isfinite(c.max_wall))
         HALFETI_USER_ERROR("--max-wall takes a positive number of seconds, got '" << v << "'");
+    } else if (a == "--max-memory") {
+      c.max_memory = parse_memory_size(value("--max-memory"), "--max-memory");
     } else if (a == "--trace" && c.kind == Command::Kind::kRun) {
       const std::string& v = value("--trace");
       if (v != "coupling") HALFETI_USER_ERROR("--trace takes 'coupling' (the one diagnostic trace), got '" << v << "'");

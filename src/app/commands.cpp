@@ -50,7 +50,7 @@ int execute(const std::vector<std::string>& args, MPI_Comm comm) {
       build_parameters(s, parts);
       int ranks = 1;
       MPI_Comm_size(comm, &ranks);
-      const SizeEstimate size = estimate_size(s, parts, ranks);
+      const SizeEstimate size = estimate_size(s, parts, ranks, cmd.max_memory);
       if (rank == 0)
         std::cout << "# " << cmd.scene << ": ok; " << size.describe() << " on " << ranks << " rank(s)\n"
                   << s.resolved_text();
@@ -68,6 +68,7 @@ int execute(const std::vector<std::string>& args, MPI_Comm comm) {
       opts.restart = cmd.restart;
       opts.overwrite = cmd.overwrite;
       opts.max_wall = cmd.max_wall;
+      opts.max_memory = cmd.max_memory;
       opts.trace_coupling = cmd.trace_coupling;
       opts.command_line = "halfeti";
       for (const auto& a : args) opts.command_line += " " + a;

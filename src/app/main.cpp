@@ -5,6 +5,7 @@
 //   halfeti cable --from 0,0.01 --to 0.1485,0.08 --modulus 1.14e6 --area 4e-6 --density 1150 --tension-stress 135e3
 #include <mpi.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -27,8 +28,16 @@ int main(int argc, char** argv) {
     std::fflush(stderr);
     MPI_Abort(MPI_COMM_WORLD, halfeti::exit_status(e.kind()));
   } catch (const halfeti::Error& e) {
-    // User and numerical errors are raised on every rank together (collective checks); rank 0 says it once.
-    if (rank == 0) std::fprintf(stderr, "halfeti: error: %s\n", e.what());
+    // User and numerical errors are raised on every rank together (collective checks); rank 0 says it once, one
+    // prefixed line per error (a scene's check reports all it found).
+    if (rank == 0) {
+      const std::string text = e.what();
+      for (std::size_t start = 0; start <= text.size();) {
+        const std::size_t end = std::min(text.find('\n', start), text.size());
+        std::fprintf(stderr, "halfeti: error: %s\n", text.substr(start, end - start).c_str());
+        start = end + 1;
+      }
+    }
     status = halfeti::exit_status(e.kind());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "halfeti: internal error: %s\n", e.what());

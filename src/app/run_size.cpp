@@ -44,7 +44,7 @@ std::string SizeEstimate::describe() const {
   return os.str();
 }
 
-SizeEstimate estimate_size(const scene::Scene& scene, const Parts& parts, int ranks) {
+SizeEstimate estimate_size(const scene::Scene& scene, const Parts& parts, int ranks, double max_memory) {
   SizeEstimate e;
   if (parts.fluid_params) {
     const auto& f = *parts.fluid_params;
@@ -72,12 +72,15 @@ SizeEstimate estimate_size(const scene::Scene& scene, const Parts& parts, int ra
   e.bytes_per_rank = kBaseBytes + kBytesPerParticle * e.particles / std::max(1, ranks) +
                      kBytesPerElement * static_cast<double>(e.plate_elements);
   e.machine_bytes = machine_memory();
-  if (e.machine_bytes > 0 && e.bytes_per_rank > e.machine_bytes) {
+  const double limit = max_memory > 0.0 ? max_memory : e.machine_bytes;
+  if (limit > 0 && e.bytes_per_rank > limit) {
     // The key of the part that takes most of it.
     const bool water = kBytesPerParticle * e.particles > kBytesPerElement * static_cast<double>(e.plate_elements);
     HALFETI_USER_ERROR(scene.file << ": " << (water ? "fluid.spacing" : "structure.cells_along")
                                   << ": the run would need " << e.describe() << " on " << ranks
-                                  << " rank(s); coarsen it or run on more ranks");
+                                  << " rank(s), above "
+                                  << (max_memory > 0.0 ? "--max-memory " : "this machine's ") << std::setprecision(3)
+                                  << limit / 1e9 << " GB; coarsen it or run on more ranks");
   }
   return e;
 }

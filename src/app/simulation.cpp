@@ -84,7 +84,7 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
   continuing_ = prepare_run_folder(comm_, out_dir_, checkpoint.get(), restart_path_, options_.overwrite);
 
   probes_ = build_parameters(scene_, parts_);
-  estimate_size(scene_, parts_, size_);  // before anything large is allocated
+  estimate_size(scene_, parts_, size_, options_.max_memory);  // before anything large is allocated
   {
     ScopedTimer timer(timers_, "setup");
     build_parts(parts_, comm_, options_.trace_coupling);

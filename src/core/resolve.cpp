@@ -1,7 +1,9 @@
 // Checking a raw scene tree against its schema (schema.hpp).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
+#include <tuple>
 
 #include "halfeti/core/error.hpp"
 #include "halfeti/core/schema.hpp"
@@ -20,9 +22,31 @@ std::string scalar_text(const YAML::Node& n) {
   return "an unreadable value";
 }
 
+// A scene's errors are all reported in one pass (up to kMaxReported): fail() records one and unwinds, by a
+// Recorded, to the key or list item that holds the bad value; the resolver goes on with the next.
+constexpr std::size_t kMaxReported = 20;
+struct Recorded {};
+
 class Resolver {
  public:
   explicit Resolver(const Origin& origin) : origin_(origin) {}
+
+  // Throws UserError with every recorded error, one per line in the order of the scene's text (the --set
+  // overrides first), when there is any.
+  void raise_if_any() {
+    if (errors_.empty()) return;
+    std::stable_sort(errors_.begin(), errors_.end(), [](const Entry& a, const Entry& b) {
+      return std::tie(a.line, a.column) < std::tie(b.line, b.column);
+    });
+    std::string text;
+    const std::size_t shown = std::min(errors_.size(), kMaxReported);
+    for (std::size_t i = 0; i < shown; ++i) text += (i ? "\n" : "") + errors_[i].text;
+    if (errors_.size() > shown)
+      text += "\n" + (origin_.file.empty() ? std::string("<scene>") : origin_.file) + ": " +
+              std::to_string(errors_.size() - shown) + " more errors not shown (" + std::to_string(errors_.size()) +
+              " in all)";
+    throw UserError(text);
+  }
 
   YAML::Node section(const YAML::Node& raw, const Schema& schema, const std::string& path, const YAML::Node& at) {
     if (raw.IsDefined() && !raw.IsNull() && !raw.IsMap())
@@ -52,6 +76,7 @@ class Resolver {
       }
     }
 
+    std::vector<std::string> meant;  // keys a near-miss spelling stood for: not reported missing as well
     for (auto it = in.begin(); it != in.end(); ++it) {
       const std::string name = it->first.Scalar();
       const bool known = std::any_of(keys.begin(), keys.end(), [&](const Key* k) { return k->name() == name; });
@@ -63,32 +88,43 @@ class Resolver {
       const std::string near = closest_name(name, names);
       if (!near.empty()) {
         msg += "; did you mean '" + near + "'?";
+        meant.push_back(near);
       } else {
         msg += "; expected one of: ";
         for (size_t i = 0; i < names.size(); ++i) msg += (i ? ", " : "") + names[i];
       }
-      fail(it->first, join_path(path, name), msg);
+      record(it->first, join_path(path, name), msg);
     }
 
     YAML::Node out(YAML::NodeType::Map);
     for (const Key* k : keys) {
-      const std::string kp = join_path(path, k->name());
-      const YAML::Node v = in[k->name()];
-      if (v.IsDefined() && !(v.IsNull() && k->kind() == ValueKind::kSection)) {
-        out[k->name()] = value(v, *k, kp);
-      } else if (v.IsDefined() && v.IsNull()) {
-        out[k->name()] = section(YAML::Node(YAML::NodeType::Map), *k->schema(), kp, v);
-      } else if (k->default_yaml()) {
-        out[k->name()] = value(YAML::Load(*k->default_yaml()), *k, kp);
-      } else if (k->is_required()) {
-        fail(located, kp, "required key missing: expected " + k->expectation());
-      } else if (k->kind() == ValueKind::kSection && (k->is_always() || implied(*k, in))) {
-        out[k->name()] = section(YAML::Node(YAML::NodeType::Map), *k->schema(), kp, located);
-      } else if (k->kind() == ValueKind::kList) {
-        out[k->name()] = YAML::Node(YAML::NodeType::Sequence);
+      if (std::find(meant.begin(), meant.end(), k->name()) != meant.end() && !in[k->name()].IsDefined()) continue;
+      try {
+        resolve_key(in, *k, path, located, out);
+      } catch (const Recorded&) {  // recorded; on to the next key
       }
     }
     return out;
+  }
+
+  // One key of a section into `out`: its value, its default, or the section it implies.
+  void resolve_key(const YAML::Node& in, const Key& k, const std::string& path, const YAML::Node& located,
+                   YAML::Node& out) {
+    const std::string kp = join_path(path, k.name());
+    const YAML::Node v = in[k.name()];
+    if (v.IsDefined() && !(v.IsNull() && k.kind() == ValueKind::kSection)) {
+      out[k.name()] = value(v, k, kp);
+    } else if (v.IsDefined() && v.IsNull()) {
+      out[k.name()] = section(YAML::Node(YAML::NodeType::Map), *k.schema(), kp, v);
+    } else if (k.default_yaml()) {
+      out[k.name()] = value(YAML::Load(*k.default_yaml()), k, kp);
+    } else if (k.is_required()) {
+      fail(located, kp, "required key missing: expected " + k.expectation());
+    } else if (k.kind() == ValueKind::kSection && (k.is_always() || implied(k, in))) {
+      out[k.name()] = section(YAML::Node(YAML::NodeType::Map), *k.schema(), kp, located);
+    } else if (k.kind() == ValueKind::kList) {
+      out[k.name()] = YAML::Node(YAML::NodeType::Sequence);
+    }
   }
 
   YAML::Node value(const YAML::Node& v, const Key& key, const std::string& path) {
@@ -156,8 +192,15 @@ class Resolver {
           fail(v, path, "expected at least " + std::to_string(key.min_items_count()) + " items, found " +
                             std::to_string(v.size()));
         YAML::Node out(YAML::NodeType::Sequence);
-        for (size_t i = 0; i < v.size(); ++i)
-          out.push_back(section(v[i], *key.schema(), path + "[" + std::to_string(i) + "]", v[i]));
+        bool complete = true;
+        for (size_t i = 0; i < v.size(); ++i) {
+          try {  // every item is checked, whatever the one before held
+            out.push_back(section(v[i], *key.schema(), path + "[" + std::to_string(i) + "]", v[i]));
+          } catch (const Recorded&) {
+            complete = false;
+          }
+        }
+        if (!complete) throw Recorded{};
         return out;
       }
     }
@@ -197,20 +240,46 @@ class Resolver {
     return os.str();
   }
 
-  [[noreturn]] void fail(const YAML::Node& node, const std::string& path, const std::string& msg) const {
+  // Records one error: "<file>:<line>:<column>: <key path>: <what>" (or "--set key=value: ...").
+  void record(const YAML::Node& node, const std::string& path, const std::string& msg) {
     std::string text = msg;
     if (msg.rfind("unknown key", 0) != 0) text = path + ": " + msg;
-    throw UserError(where(node, path) + ": " + text);
+    Entry e;
+    e.text = where(node, path) + ": " + text;
+    if (e.text.rfind("--set ", 0) != 0 && node.IsDefined() && !node.Mark().is_null()) {
+      e.line = node.Mark().line + 1;
+      e.column = node.Mark().column + 1;
+    } else if (e.text.rfind("--set ", 0) != 0) {
+      e.line = std::numeric_limits<int>::max();  // no place in the text: after those that have one
+    }
+    errors_.push_back(std::move(e));
   }
 
+  // Records one error and unwinds to the key that holds the value.
+  [[noreturn]] void fail(const YAML::Node& node, const std::string& path, const std::string& msg) {
+    record(node, path, msg);
+    throw Recorded{};
+  }
+
+  struct Entry {
+    int line = 0, column = 0;  // 0: a --set override (reported first)
+    std::string text;
+  };
   const Origin& origin_;
+  std::vector<Entry> errors_;
 };
 
 }  // namespace
 
 YAML::Node resolve(const YAML::Node& raw, const Schema& schema, const Origin& origin) {
   Resolver r(origin);
-  return r.section(raw, schema, "", raw);
+  YAML::Node out;
+  try {
+    out = r.section(raw, schema, "", raw);
+  } catch (const Recorded&) {  // the whole tree was not a section: recorded
+  }
+  r.raise_if_any();
+  return out;
 }
 
 void apply_override(YAML::Node& raw, const std::string& assignment, Origin& origin) {

@@ -58,9 +58,10 @@ std::string Scene::resolved_text() const {
 namespace {
 // yaml-cpp keeps every entry of a mapping that repeats a key (and its lookups find the first): a repeated key is
 // an error here, as PyYAML in the tools would silently keep the last.
-void reject_duplicate_keys(const YAML::Node& n, const std::string& file, const std::string& path) {
+void find_duplicate_keys(const YAML::Node& n, const std::string& file, const std::string& path,
+                         std::vector<std::string>& found) {
   if (n.IsSequence()) {
-    for (std::size_t i = 0; i < n.size(); ++i) reject_duplicate_keys(n[i], file, path + "[" + std::to_string(i) + "]");
+    for (std::size_t i = 0; i < n.size(); ++i) find_duplicate_keys(n[i], file, path + "[" + std::to_string(i) + "]", found);
     return;
   }
   if (!n.IsMap()) return;
@@ -69,11 +70,21 @@ void reject_duplicate_keys(const YAML::Node& n, const std::string& file, const s
     const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("(a non-scalar key)");
     const std::string full = path.empty() ? key : path + "." + key;
     if (std::find(seen.begin(), seen.end(), key) != seen.end())
-      HALFETI_USER_ERROR(file << ":" << kv.first.Mark().line + 1 << ": key '" << full
-                              << "' appears twice in the same section (which one was meant?)");
+      found.push_back(file + ":" + std::to_string(kv.first.Mark().line + 1) + ": key '" + full +
+                      "' appears twice in the same section (which one was meant?)");
     seen.push_back(key);
-    reject_duplicate_keys(kv.second, file, full);
+    find_duplicate_keys(kv.second, file, full, found);
   }
+}
+
+// Every repeated key of the scene, one line each (in the order of the text), as one UserError.
+void reject_duplicate_keys(const YAML::Node& n, const std::string& file) {
+  std::vector<std::string> found;
+  find_duplicate_keys(n, file, "", found);
+  if (found.empty()) return;
+  std::string text;
+  for (const auto& f : found) text += (text.empty() ? "" : "\n") + f;
+  throw UserError(text);
 }
 }  // namespace
 
@@ -87,7 +98,7 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::v
   }
   if (raw.IsDefined() && !raw.IsNull() && !raw.IsMap())
     HALFETI_USER_ERROR(file << ": a scene is a YAML mapping of sections (scene:, fluid:, ...), found something else");
-  reject_duplicate_keys(raw, file, "");
+  reject_duplicate_keys(raw, file);
   Origin origin{file, {}};
   Scene s;
   s.file = file;

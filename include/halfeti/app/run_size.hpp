@@ -21,7 +21,8 @@ struct SizeEstimate {
   double steps = 0.0, wall_seconds = 0.0;
   std::string describe() const;
 };
-// Raises UserError naming the key when a rank would need more memory than the machine has.
-SizeEstimate estimate_size(const scene::Scene& scene, const Parts& parts, int ranks);
+// Raises UserError naming the key when a rank would need more memory than `max_memory` bytes (--max-memory), or
+// than the machine has when `max_memory` is 0.
+SizeEstimate estimate_size(const scene::Scene& scene, const Parts& parts, int ranks, double max_memory = 0.0);
 
 }  // namespace halfeti::app

@@ -28,6 +28,7 @@ struct RunOptions {
   std::string restart;                  // --restart: a checkpoint, or a run folder (its latest checkpoint)
   bool overwrite = false;               // --overwrite: clear another run's outputs from the folder first
   double max_wall = 0.0;                // --max-wall: stop (resumable) before this many wall seconds; 0: none
+  double max_memory = 0.0;              // --max-memory: refuse a scene estimated above this per rank [B]; 0: the machine's
   bool trace_coupling = false;          // --trace coupling: diagnostic lines per coupled step on stderr
   std::string command_line;             // for summary.json's provenance
 };

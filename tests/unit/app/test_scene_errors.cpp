@@ -139,6 +139,79 @@ TEST(SceneErrors, CheckCommandAnswersOneLineAndExitsTwo) {
   }
 }
 
+TEST(SceneErrors, EverySchemaErrorIsReportedInOnePass) {
+  // Four errors in three sections and a list item: all four, one line each, in the order of the text.
+  const char* text =
+      "scene: {name: s, end_time: -1}\n"
+      "tank: {length: 0.3, heigth: 0.4}\n"
+      "probes:\n"
+      "  - {kind: ground_acceleration}\n"
+      "  - {name: b, kind: ground_acceleration, every: 2}\n"
+      "output: {probe_interval: 0}\n";
+  try {
+    scene::parse_scene(text, "bad.yaml", {}, *app::scene_schema());
+    ADD_FAILURE() << "accepted";
+  } catch (const UserError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "bad.yaml:1:28: scene.end_time: expected a number > 0 and <= 10000 (s), found '-1'\n"
+              "bad.yaml:2:21: unknown key 'tank.heigth'; did you mean 'height'?\n"
+              "bad.yaml:4:5: probes[0].name: required key missing: expected a string\n"
+              "bad.yaml:5:42: unknown key 'probes[1].every' for kind 'ground_acceleration'; expected one of: name, kind\n"
+              "bad.yaml:6:26: output.probe_interval: expected a number > 0 (s), found '0'");
+  }
+  // A --set override's error comes first, then the text's.
+  try {
+    scene::parse_scene("scene: {name: s, end_time: 1}\ntank: {length: -1, height: 0.4}\n", "bad.yaml",
+                       {"scene.end_time=0"}, *app::scene_schema());
+    ADD_FAILURE() << "accepted";
+  } catch (const UserError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "--set scene.end_time=0: scene.end_time: expected a number > 0 and <= 10000 (s), found '0'\n"
+              "bad.yaml:2:16: tank.length: expected a number > 0 and <= 100 (m), found '-1'");
+  }
+  // Repeated keys: every one.
+  try {
+    scene::parse_scene("scene: {name: s, name: t, end_time: 1}\ntank: {length: 1, length: 2}\n", "bad.yaml", {},
+                       *app::scene_schema());
+    ADD_FAILURE() << "accepted";
+  } catch (const UserError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "bad.yaml:1: key 'scene.name' appears twice in the same section (which one was meant?)\n"
+              "bad.yaml:2: key 'tank.length' appears twice in the same section (which one was meant?)");
+  }
+}
+
+TEST(SceneErrors, ManyErrorsAreCappedWithACount) {
+  // 25 probes without a name: the first 20 lines, then one line with the count.
+  std::string text = "scene: {name: s, end_time: 1}\nprobes:\n";
+  for (int i = 0; i < 25; ++i) text += "  - {kind: ground_acceleration}\n";
+  const std::string dir = std::string(HALFETI_BINARY_DIR) + "/scene_error_many";
+  io::make_directories(dir);
+  const std::string path = dir + "/bad.yaml";
+  std::ofstream(path) << text;
+  std::string err;
+  EXPECT_EQ(run_and_capture("check " + path, err), 2);
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 21) << err;
+  EXPECT_NE(err.find("halfeti: error: " + path + ":3:5: probes[0].name: required key missing"), std::string::npos) << err;
+  EXPECT_NE(err.find("halfeti: error: " + path + ":22:5: probes[19].name: required key missing"), std::string::npos)
+      << err;
+  EXPECT_EQ(err.find("probes[20]"), std::string::npos) << err;
+  EXPECT_NE(err.find("halfeti: error: " + path + ": 5 more errors not shown (25 in all)\n"), std::string::npos) << err;
+}
+
+TEST(SceneErrors, MaxMemoryRefusesAnOversizedScene) {
+  // The paper's tank at dx 1.5 mm needs about 65 MB on a rank (run_size.cpp's figures): refused under 10 MB,
+  // accepted under 1 GB; a malformed size is an error naming the option.
+  const std::string scene = std::string(HALFETI_SOURCE_DIR) + "/inputs/paper/cosine_free.yaml";
+  std::string err;
+  EXPECT_EQ(run_and_capture("check " + scene + " --max-memory 10M", err), 2);
+  EXPECT_NE(err.find("fluid.spacing: the run would need"), std::string::npos) << err;
+  EXPECT_NE(err.find("above --max-memory 0.01 GB"), std::string::npos) << err;
+  EXPECT_EQ(run_and_capture("check " + scene + " --max-memory 1GiB", err), 0) << err;
+  EXPECT_EQ(run_and_capture("check " + scene + " --max-memory lots", err), 2);
+  EXPECT_EQ(err, "halfeti: error: --max-memory takes a memory size such as 8G, 512M or 2GiB, got 'lots'\n");
+}
+
 TEST(SceneErrors, ChecksAcrossKeysNameTheFileAndKey) {
   // Errors found after the schema (a key that depends on another) still name the scene file and the key path.
   const std::string dir = std::string(HALFETI_BINARY_DIR) + "/scene_cross_cases";
