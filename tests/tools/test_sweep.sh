@@ -28,4 +28,13 @@ fi
 "$root/jobscripts/sweep" "$work/tiny.yaml" --vary excitation.amplitude=1,2 --slurm --ranks 2 --out "$work/slurm" >/dev/null
 grep -q "#SBATCH --array=1-2" "$work/slurm/sweep.sbatch" || { echo "no array line"; exit 1; }
 [ "$(wc -l < "$work/slurm/runs.txt")" -eq 2 ] || { echo "runs.txt should hold 2 commands"; exit 1; }
+# A misspelt key is refused by halfeti check before anything is written for SLURM or run, naming the point.
+if err=$("$root/jobscripts/sweep" "$work/tiny.yaml" --vary excitation.amplitud=1,2 --slurm --out "$work/misspelt" 2>&1); then
+  echo "a misspelt --vary key was accepted"; exit 1
+fi
+grep -q "2 of 2 point(s) do not pass halfeti check" <<<"$err" || { echo "no check error: $err"; exit 1; }
+grep -q "did you mean 'amplitude'" <<<"$err" || { echo "the error does not name the key: $err"; exit 1; }
+[ ! -e "$work/misspelt/sweep.sbatch" ] || { echo "a job script was written for a sweep that does not check"; exit 1; }
+# The time request comes from the estimate (tiny: well under a minute, so 5 minutes).
+grep -q "#SBATCH --time=00:05:00" "$work/slurm/sweep.sbatch" || { echo "time request not from the estimate"; exit 1; }
 echo "sweep: ok"
