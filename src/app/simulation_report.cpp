@@ -4,10 +4,12 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
+#include <vector>
 
 #include "halfeti/app/simulation.hpp"
 #include "halfeti/core/collective.hpp"
@@ -104,6 +106,21 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
   double sums[2] = {cpu_here, rss_here}, rss_max = rss_here;
   MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, comm_);
   MPI_Allreduce(MPI_IN_PLACE, &rss_max, 1, MPI_DOUBLE, MPI_MAX, comm_);
+  // Per rank: the water's messages and bytes sent (halo and migration), seconds waiting for them, its own work
+  // (the fluid's phases that no other rank waits in: pairs, forces, density gradient, integration) and its peak
+  // memory, gathered on rank 0.
+  constexpr int kPerRank = 5;
+  double mine[kPerRank] = {0, 0, 0, 0, rss_here};
+  if (parts_.fluid) {
+    const auto& tr = parts_.fluid->traffic();
+    const auto& ft = parts_.fluid->timers();
+    mine[0] = static_cast<double>(tr.messages);
+    mine[1] = static_cast<double>(tr.bytes);
+    mine[2] = tr.wait_seconds;
+    mine[3] = ft.seconds("neighbours") + ft.seconds("forces") + ft.seconds("density_gradient") + ft.seconds("integrate");
+  }
+  std::vector<double> per_rank(rank_ == 0 ? kPerRank * size_ : 0);
+  MPI_Gather(mine, kPerRank, MPI_DOUBLE, per_rank.data(), kPerRank, MPI_DOUBLE, 0, comm_);
   collective_outcome(comm_, 0, rank_ == 0, [&] {  // rank 0 writes; a failed write stops every rank
     const scene::Node root = scene_.root();
     io::Json j = io::Json::object();
@@ -143,6 +160,27 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
     io::Json tj = io::Json::object();
     for (const auto& [phase, seconds] : timers.all()) tj.set(phase, seconds);
     j.set("timers", tj);
+    if (parts_.fluid) {  // this run's (a restarted run's: since its restart)
+      io::Json comm = io::Json::object();
+      const double steps_d = std::max(1.0, static_cast<double>(steps_ - steps_at_start_));
+      io::Json msgs = io::Json::array(), bytes = io::Json::array(), wait = io::Json::array(),
+               work = io::Json::array(), memory = io::Json::array();
+      double work_max = 0.0, work_sum = 0.0;
+      for (int r = 0; r < size_; ++r) {
+        const double* v = &per_rank[static_cast<std::size_t>(kPerRank * r)];
+        msgs.push(v[0] / steps_d);
+        bytes.push(v[1] / steps_d);
+        wait.push(v[2]);
+        work.push(v[3]);
+        memory.push(v[4]);
+        work_max = std::max(work_max, v[3]);
+        work_sum += v[3];
+      }
+      comm.set("messages_sent_per_step", msgs).set("bytes_sent_per_step", bytes).set("mpi_wait_seconds", wait);
+      comm.set("compute_seconds", work).set("peak_memory_bytes", memory);
+      comm.set("load_imbalance", work_sum > 0.0 ? io::Json(work_max * size_ / work_sum) : io::Json());
+      j.set("ranks_detail", comm);
+    }
     if (parts_.coupling && parts_.coupling->parameters().implicit_exchange()) {  // this run's (since a restart)
       io::Json ex = io::Json::object();
       const auto& e = exchange_;

@@ -127,6 +127,7 @@ void Fluid::distribute(ParticleArrays all) {
   std::vector<long> counts(grid_.cell_count(), 0);
   for (std::size_t k = 0; k < n; ++k) ++counts[grid_.cell_of(all.x[k], all.y[k])];
   owner_ = parallel::partition_cells_collective(comm_.get(), grid_, counts, params_.first_rank_share);
+  peers_ = parallel::neighbour_ranks(grid_.nx, grid_.ny, owner_, rank_);
   gid_.clear();
   for (auto* v : {&x_, &y_, &vx_, &vy_, &rho_, &mass_}) v->clear();
   for (std::size_t k = 0; k < n; ++k) {
@@ -164,7 +165,7 @@ void Fluid::sort_owned_by_cell() {
 
 void Fluid::exchange_halo() {
   // The plan is rebuilt every step (particles move every step; building it costs less than one field update).
-  const parallel::HaloPlan plan(comm_.get(), grid_, owner_, cell_);
+  const parallel::HaloPlan plan(comm_.get(), grid_, owner_, cell_, peers_, &traffic_);
   constexpr int kFields = 6;
   std::vector<double> state(static_cast<std::size_t>(n_owned_) * kFields);
   for (int i = 0; i < n_owned_; ++i) {
@@ -410,12 +411,13 @@ void Fluid::maybe_rebalance() {
   const auto counts = global_cell_counts();
   if (parallel::imbalance(owner_, counts, size_, params_.first_rank_share) <= params_.rebalance_threshold) return;
   owner_ = parallel::partition_cells_collective(comm_.get(), grid_, counts, params_.first_rank_share);
+  peers_ = parallel::neighbour_ranks(grid_.nx, grid_.ny, owner_, rank_);
 }
 
 void Fluid::migrate() {
   for (int i = 0; i < n_owned_; ++i) cell_[i] = grid_.cell_of(x_[i], y_[i]);
   if (size_ > 1) {
-    const parallel::ParticleMigration move(comm_.get(), parallel::destinations(cell_, owner_));
+    const parallel::ParticleMigration move(comm_.get(), parallel::destinations(cell_, owner_), &traffic_);
     if (move.anything_moves()) {
       for (auto* v : {&x_, &y_, &vx_, &vy_, &rho_, &mass_}) move.apply(*v);
       move.apply(gid_);

@@ -1,6 +1,8 @@
 // Moving particles to the rank that owns their cell. ParticleMigration is a plan (ids and ranks) built from each
 // particle's destination; apply() moves one field at a time. Particles that stay keep their relative order,
-// arrivals follow in order of source rank, then of their position on the source.
+// arrivals follow in order of source rank, then of their position on the source. Its messages go to the ranks
+// that send or receive particles only (CommPlan::discover), whatever the destinations (a new partition moves
+// particles between ranks that were not neighbours).
 #pragma once
 
 #include <mpi.h>
@@ -8,28 +10,28 @@
 #include <cstdint>
 #include <vector>
 
+#include "halfeti/parallel/comm_plan.hpp"
+
 namespace halfeti::parallel {
 
 class ParticleMigration {
  public:
-  // Collective. destination[i] = rank that must own particle i after the move.
-  ParticleMigration(MPI_Comm comm, const std::vector<int>& destination);
+  // Collective. destination[i] = rank that must own particle i after the move. `traffic`, if given, counts the
+  // plan's messages.
+  ParticleMigration(MPI_Comm comm, const std::vector<int>& destination, Traffic* traffic = nullptr);
 
-  std::size_t new_count() const { return static_cast<std::size_t>(recv_total_); }
-  bool anything_moves() const { return anything_moves_; }
+  std::size_t new_count() const { return plan_.recv_total(); }
+  // Whether this rank's particles change (some leave or arrive); apply() on a rank where none does leaves the
+  // fields as they are, so it may be skipped there (it is not collective).
+  bool anything_moves() const { return plan_.exchanges_anything(); }
 
   // Row-major fields with ncomp values per particle; replaced by the migrated rows.
   void apply(std::vector<double>& field, int ncomp = 1) const;
   void apply(std::vector<std::int64_t>& field) const;
 
  private:
-  void move(const void* send, void* recv, int ncomp, MPI_Datatype type, std::size_t elem) const;
-
-  MPI_Comm comm_;
   std::vector<int> order_;  // local indices grouped by destination (stable)
-  std::vector<int> send_counts_, send_displs_, recv_counts_, recv_displs_;
-  int recv_total_ = 0;
-  bool anything_moves_ = false;
+  CommPlan plan_;
 };
 
 // Destination rank of each particle: owner of its cell.

@@ -110,6 +110,8 @@ class Fluid {
   double min_spacing() const;  // closest fluid pair at the last neighbour search, in dx (over every rank)
 
   const PhaseTimers& timers() const { return timers_; }
+  // This rank's halo and migration messages since the run (or its restart) started.
+  const parallel::Traffic& traffic() const { return traffic_; }
   const std::vector<HealthEvent>& health_events() const { return events_; }
 
   // ---- restart ----
@@ -167,7 +169,9 @@ class Fluid {
   double c0_ = 0.0, dx_ = 0.0;
   parallel::CellGrid grid_;
   std::vector<int> owner_;  // cell -> rank
+  std::vector<int> peers_;  // the ranks owning cells around this rank's: whom the halo talks to (from owner_)
   parallel::HaloPlan halo_plan_;
+  parallel::Traffic traffic_;  // messages, bytes and MPI waiting of the halo and the migration (a diagnostic)
   WallParticles walls_;
   WallGhosts ghosts_;
   NeighbourSearch search_;
@@ -196,7 +200,7 @@ class Fluid {
  public:
 // The members a step changes, listed once for the snapshot's copy both ways.
 #define HALFETI_FLUID_STEP_STATE(X)                                                                                  \
-  X(owner_) X(halo_plan_) X(search_) X(pairs_) X(wall_pairs_) X(ghost_pairs_) X(n_owned_) X(n_local_) X(n_global_)  \
+  X(owner_) X(peers_) X(halo_plan_) X(search_) X(pairs_) X(wall_pairs_) X(ghost_pairs_) X(n_owned_) X(n_local_) X(n_global_)  \
   X(spilled_mass_) X(gid_) X(x_) X(y_) X(vx_) X(vy_) X(rho_) X(mass_) X(p_) X(volume_) X(cell_) X(grad_rho_)        \
   X(rates_) X(constants_) X(extra_ax_) X(extra_ay_) X(plate_wall_) X(time_) X(dt_) X(step_) X(forces_ready_)         \
   X(predicted_) X(density_pending_) X(events_) X(active_warnings_)
