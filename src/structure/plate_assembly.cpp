@@ -9,18 +9,6 @@
 
 namespace halfeti::structure {
 
-Q9Coordinates PlateSolver::element_displacement(int e) const {
-  Q9Coordinates u;
-  for (int a = 0; a < kQ9Nodes; ++a) u.row(a) = u_.segment<2>(2 * mesh_.elements[e][a]).transpose();
-  return u;
-}
-
-Q4Coordinates PlateSolver::quad_displacement(int e) const {
-  Q4Coordinates u;
-  for (int a = 0; a < kQ4Nodes; ++a) u.row(a) = u_.segment<2>(2 * mesh_.quads[e][a]).transpose();
-  return u;
-}
-
 std::vector<std::vector<int>> PlateSolver::node_adjacency() const {
   std::vector<std::set<int>> adj(node_count());
   auto couple = [&adj](const auto& nodes) {
@@ -87,17 +75,50 @@ void PlateSolver::compute_external(double t) {
   for (int n = 0; n < node_count(); ++n) body_forces_.segment<2>(2 * n) = mass_row_sum_(n) * body;
 }
 
-void PlateSolver::update_acceleration() {
-  // Newmark: a = (u - u_n - dt v_n - dt^2 (1/2 - beta) a_n) / (beta dt^2).
-  const double beta = params_.newmark.beta;
-  a_ = (u_ - u_n_ - dt_ * v_n_ - dt_ * dt_ * (0.5 - beta) * a_n_) / (beta * dt_ * dt_);
+void PlateSolver::update_acceleration() { newmark_.acceleration(u_, u_n_, v_n_, a_n_, dt_, a_); }
+
+template <typename Family, typename ElementSink>
+void PlateSolver::element_terms(Family& family, ElementSink& element_sink, bool with_matrix, bool with_tangent,
+                                double mass_coefficient, bool inertia_in_residual, std::string& failure) {
+  constexpr int nn = Family::kNodes;
+  typename Family::Vector force;
+  typename Family::Matrix element_matrix;  // component-major: row/column nn i + a = component i of local node a
+  Eigen::Matrix<double, nn, 2> element_acceleration;
+  for (int e : partition_.owned_elements) {
+    const auto& nodes = family.nodes(e);
+    const typename Family::Coordinates displacement = family.displacement(e, u_);
+    try {
+      family.evaluate(e, displacement, with_matrix, with_tangent, force, element_matrix);
+    } catch (const NumericalError& error) {
+      const Eigen::Vector2d centre = family.centre(e, [&](int n) { return position(n); });
+      std::ostringstream what;
+      what << error.what() << " in element " << e << " at (" << centre.x() << ", " << centre.y() << ") m, "
+           << when() << "; hint: smaller dt, or check the loads";
+      failure = what.str();
+      break;
+    }
+    const auto& m = family.mass(e);
+    if (with_matrix && mass_coefficient != 0.0) {
+      element_matrix.template block<nn, nn>(0, 0) += mass_coefficient * m;
+      element_matrix.template block<nn, nn>(nn, nn) += mass_coefficient * m;
+    }
+    if (inertia_in_residual) {
+      for (int b = 0; b < nn; ++b) element_acceleration.row(b) = a_.segment<2>(2 * nodes[b]).transpose();
+      const Eigen::Matrix<double, nn, 2> inertia = m.lazyProduct(element_acceleration);
+      for (int a = 0; a < nn; ++a)
+        residual_.segment<2>(2 * nodes[a]) -= force.template segment<2>(2 * a) + inertia.row(a).transpose();
+    } else {
+      for (int a = 0; a < nn; ++a) residual_.segment<2>(2 * nodes[a]) -= force.template segment<2>(2 * a);
+    }
+    if (with_matrix) element_sink(e, element_matrix.data());
+  }
 }
 
 template <typename ElementSink, typename NodalSink>
 void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& nodal_sink, bool with_matrix) {
   const bool inertia_in_residual = mode_ == Mode::kDynamic;
   const double stiffness_coefficient = mode_ == Mode::kInitialAcceleration ? 0.0 : 1.0;
-  const double mass_coefficient = mode_ == Mode::kDynamic ? 1.0 / (params_.newmark.beta * dt_ * dt_)
+  const double mass_coefficient = mode_ == Mode::kDynamic ? newmark_.mass_coefficient(dt_)
                                   : mode_ == Mode::kInitialAcceleration ? 1.0
                                                                         : 0.0;
   if (inertia_in_residual) update_acceleration();
@@ -110,92 +131,10 @@ void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& n
   // A numerical failure (an inverted point, a cable that cannot be solved) is raised on every rank together
   // (below), so that no rank is left waiting in the residual's reduction.
   std::string failure;
-  if (mesh_.element_type == ElementType::kQ4Eas) {
-    Q4Vector force;
-    Q4Matrix element_matrix;  // component-major: row/column 4 i + a = component i of local node a
-    Eigen::Matrix<double, kQ4Nodes, 2> element_acceleration;
-    for (int e : partition_.owned_elements) {
-      const auto& nodes = mesh_.quads[e];
-      const Q4Coordinates displacement = quad_displacement(e);
-      try {
-        // alpha is solved from the element's start value alpha_[e], which only apply_increment() changes, so a
-        // residual-only check before an assembly (step()) or none (the coupling's loop) gives the same bits.
-        EasParameters alpha = alpha_[e];
-        if (with_matrix && stiffness_coefficient != 0.0) {
-          integrator4_->internal_force_and_tangent_component_major(geometry4_[e], displacement, alpha, force,
-                                                                   element_matrix, &alpha_update_[e]);
-          alpha_solved_[e] = alpha;
-        } else {
-          integrator4_->internal_force(geometry4_[e], displacement, alpha, force);
-          if (with_matrix) {
-            element_matrix.setZero();
-            alpha_solved_[e] = alpha;
-            alpha_update_[e].setZero();
-          }
-        }
-      } catch (const NumericalError& error) {
-        const Eigen::Vector2d centre = 0.25 * (position(nodes[0]) + position(nodes[1]) + position(nodes[2]) +
-                                               position(nodes[3]));
-        std::ostringstream what;
-        what << error.what() << " in element " << e << " at (" << centre.x() << ", " << centre.y()
-             << ") m, " << when() << "; hint: smaller dt, or check the loads";
-        failure = what.str();
-        break;
-      }
-      const auto& m = mass4_[e];
-      if (with_matrix && mass_coefficient != 0.0) {
-        element_matrix.block<kQ4Nodes, kQ4Nodes>(0, 0) += mass_coefficient * m;
-        element_matrix.block<kQ4Nodes, kQ4Nodes>(kQ4Nodes, kQ4Nodes) += mass_coefficient * m;
-      }
-      if (inertia_in_residual) {
-        for (int b = 0; b < kQ4Nodes; ++b) element_acceleration.row(b) = a_.segment<2>(2 * nodes[b]).transpose();
-        const Eigen::Matrix<double, kQ4Nodes, 2> inertia = m.lazyProduct(element_acceleration);
-        for (int a = 0; a < kQ4Nodes; ++a)
-          residual_.segment<2>(2 * nodes[a]) -= force.segment<2>(2 * a) + inertia.row(a).transpose();
-      } else {
-        for (int a = 0; a < kQ4Nodes; ++a) residual_.segment<2>(2 * nodes[a]) -= force.segment<2>(2 * a);
-      }
-      if (with_matrix) element_sink(e, element_matrix.data());
-    }
-  }
-  Q9Vector force;
-  Q9Matrix element_matrix;  // component-major: row/column 9 i + a = component i of local node a
-  Eigen::Matrix<double, kQ9Nodes, 2> element_acceleration;
-  static const std::vector<int> kNone;
-  for (int e : mesh_.element_type == ElementType::kQ9 ? partition_.owned_elements : kNone) {
-    const auto& nodes = mesh_.elements[e];
-    const Q9Coordinates displacement = element_displacement(e);
-    try {
-      if (with_matrix && stiffness_coefficient != 0.0) {
-        integrator_->internal_force_and_tangent_component_major(geometry_[e], displacement, force,
-                                                                element_matrix);
-      } else {
-        integrator_->internal_force(geometry_[e], displacement, force);
-        element_matrix.setZero();
-      }
-    } catch (const NumericalError& error) {
-      const Eigen::Vector2d centre = position(nodes[4]);
-      std::ostringstream what;
-      what << error.what() << " in element " << e << " at (" << centre.x() << ", " << centre.y()
-           << ") m, " << when() << "; hint: smaller dt, or check the loads";
-      failure = what.str();
-      break;
-    }
-    const auto& m = mass_[e];
-    if (with_matrix && mass_coefficient != 0.0) {
-      element_matrix.block<kQ9Nodes, kQ9Nodes>(0, 0) += mass_coefficient * m;
-      element_matrix.block<kQ9Nodes, kQ9Nodes>(kQ9Nodes, kQ9Nodes) += mass_coefficient * m;
-    }
-    if (inertia_in_residual) {
-      for (int b = 0; b < kQ9Nodes; ++b) element_acceleration.row(b) = a_.segment<2>(2 * nodes[b]).transpose();
-      const Eigen::Matrix<double, kQ9Nodes, 2> inertia = m.lazyProduct(element_acceleration);
-      for (int a = 0; a < kQ9Nodes; ++a)
-        residual_.segment<2>(2 * nodes[a]) -= force.segment<2>(2 * a) + inertia.row(a).transpose();
-    } else {
-      for (int a = 0; a < kQ9Nodes; ++a) residual_.segment<2>(2 * nodes[a]) -= force.segment<2>(2 * a);
-    }
-    if (with_matrix) element_sink(e, element_matrix.data());
-  }
+  with_family([&](auto& family) {
+    element_terms(family, element_sink, with_matrix, stiffness_coefficient != 0.0, mass_coefficient,
+                  inertia_in_residual, failure);
+  });
 
   // Nodal elements (cables): their force is internal (enters as F), their tangent adds to K. Rank 0 evaluates
   // them all (a cable is a handful of operations).
@@ -253,7 +192,7 @@ void PlateSolver::add_newton_system(Mat matrix, Vec rhs, PetscInt offset) {
   HALFETI_PETSC_CALL(MatGetBlockSize(matrix, &block_size));
   const bool blocked = block_size == 2 && offset % 2 == 0;
   const int nn = mesh_.nodes_per_element(), nd = 2 * nn;
-  double interleaved[kQ9Dofs * kQ9Dofs];  // row-major nd x nd
+  double interleaved[2 * kQ9Nodes * 2 * kQ9Nodes];  // row-major nd x nd (the largest element's)
   auto element_sink = [&](int e, const double* component_major) {  // column-major nd x nd, row 9 i + a
     const int* nodes = mesh_.element_nodes(e);
     for (int b = 0; b < nn; ++b)
@@ -262,7 +201,7 @@ void PlateSolver::add_newton_system(Mat matrix, Vec rhs, PetscInt offset) {
           for (int k = 0; k < 2; ++k)
             interleaved[(2 * a + i) * nd + 2 * b + k] = component_major[(nn * k + b) * nd + nn * i + a];
     const double* values = interleaved;
-    PetscInt rows[kQ9Dofs];
+    PetscInt rows[2 * kQ9Nodes];
     // Negative indices make PETSc skip the clamped rows and columns.
     const auto& to_petsc = partition_.petsc_node;
     if (blocked) {

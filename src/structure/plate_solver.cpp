@@ -13,16 +13,7 @@ void validate(const StructureParameters& p) {
   const auto& m = p.material;
   if (!(m.density > 0.0))
     HALFETI_USER_ERROR("structure.material.density = " << m.density << " kg/m^3 must be > 0");
-  if (!(p.newmark.beta > 0.0 && p.newmark.beta <= 0.5))
-    HALFETI_USER_ERROR("structure.newmark.beta = " << p.newmark.beta << " must lie in (0, 0.5]");
-  if (!(p.newmark.gamma >= 0.5 && p.newmark.gamma <= 1.0))
-    HALFETI_USER_ERROR("structure.newmark.gamma = " << p.newmark.gamma << " must lie in [0.5, 1]");
-  if (p.newmark.beta < 0.25 * (p.newmark.gamma + 0.5) * (p.newmark.gamma + 0.5) - 1e-14)
-    HALFETI_USER_ERROR("structure.newmark: beta = "
-                       << p.newmark.beta
-                       << " < (gamma + 1/2)^2 / 4 is only "
-                          "conditionally stable; use beta >= "
-                       << 0.25 * (p.newmark.gamma + 0.5) * (p.newmark.gamma + 0.5));
+  validate(p.newmark);
   if (p.newton.max_iterations < 1)
     HALFETI_USER_ERROR("structure.newton.max_iterations = " << p.newton.max_iterations << " must be >= 1");
   if (!(p.newton.residual_rtol > 0.0 && p.newton.residual_rtol < 1.0))
@@ -34,43 +25,49 @@ void validate(const StructureParameters& p) {
     HALFETI_USER_ERROR("structure.newton.increment_rtol = " << p.newton.increment_rtol << " must be > 0");
 }
 
+namespace {
+const StructureParameters& validated(const StructureParameters& p) {
+  validate(p);
+  return p;
+}
+
+std::variant<Q9Family, Q4EasFamily> make_family(const Material& material, const PlateMaterialParameters& m,
+                                                const PlateMesh& mesh) {
+  if (mesh.element_type == ElementType::kQ4Eas)
+    return std::variant<Q9Family, Q4EasFamily>(std::in_place_type<Q4EasFamily>, material,
+                                               Q4EasOptions{m.hypothesis}, mesh, m.density);
+  return std::variant<Q9Family, Q4EasFamily>(std::in_place_type<Q9Family>, material,
+                                             Q9Options{m.hypothesis, m.selective_reduced_integration}, mesh,
+                                             m.density);
+}
+}  // namespace
+
 PlateSolver::PlateSolver(MPI_Comm comm, const StructureParameters& params,
                          const excitation::GroundMotion* ground)
-    : comm_(comm), params_(params), ground_(ground) {
-  validate(params_);
+    : comm_(comm),
+      params_(validated(params)),
+      ground_(ground),
+      mesh_(make_plate_mesh(params_.geometry)),
+      material_(make_material(params_.material.model, params_.material.youngs_modulus,
+                              params_.material.poisson_ratio)),
+      family_(make_family(*material_, params_.material, mesh_)),
+      newmark_(params_.newmark) {
   rank_ = comm_.rank();
   size_ = comm_.size();
-  mesh_ = make_plate_mesh(params_.geometry);
   partition_ = partition_plate(mesh_, comm_.get());
-  const auto& m = params_.material;
-  material_ = make_material(m.model, m.youngs_modulus, m.poisson_ratio);
-  integrator_ =
-      std::make_unique<HyperelasticQ9>(*material_, Q9Options{m.hypothesis, m.selective_reduced_integration});
-  integrator4_ = std::make_unique<HyperelasticQ4Eas>(*material_, Q4EasOptions{m.hypothesis});
 
   const int n = node_count();
   clamped_.assign(n, false);
   for (int c : mesh_.clamped_nodes) clamped_[c] = true;
+  // Nodal masses (the consistent mass's row sums), for the body forces.
   mass_row_sum_ = Eigen::VectorXd::Zero(n);
-  for (const auto& e : mesh_.quads) {
-    Q4Coordinates x;
-    for (int a = 0; a < kQ4Nodes; ++a) x.row(a) = mesh_.nodes[e[a]].transpose();
-    geometry4_.push_back(HyperelasticQ4Eas::reference_geometry(x));
-    mass4_.push_back(HyperelasticQ4Eas::scalar_mass(geometry4_.back(), m.density));
-    const Eigen::Matrix<double, kQ4Nodes, 1> rows = mass4_.back().rowwise().sum();
-    for (int a = 0; a < kQ4Nodes; ++a) mass_row_sum_(e[a]) += rows(a);
-  }
-  alpha_.assign(mesh_.quads.size(), EasParameters::Zero());
-  alpha_update_.assign(mesh_.quads.size(), EasUpdate::Zero());
-  alpha_solved_ = alpha_;
-  for (const auto& e : mesh_.elements) {
-    Q9Coordinates x;
-    for (int a = 0; a < kQ9Nodes; ++a) x.row(a) = mesh_.nodes[e[a]].transpose();
-    geometry_.push_back(HyperelasticQ9::reference_geometry(x));
-    mass_.push_back(HyperelasticQ9::scalar_mass(geometry_.back(), m.density));
-    const Eigen::Matrix<double, kQ9Nodes, 1> rows = mass_.back().rowwise().sum();
-    for (int a = 0; a < kQ9Nodes; ++a) mass_row_sum_(e[a]) += rows(a);
-  }
+  with_family([&](const auto& family) {
+    using Family = std::decay_t<decltype(family)>;
+    for (int e = 0; e < family.count(); ++e) {
+      const Eigen::Matrix<double, Family::kNodes, 1> rows = family.mass(e).rowwise().sum();
+      for (int a = 0; a < Family::kNodes; ++a) mass_row_sum_(family.nodes(e)[a]) += rows(a);
+    }
+  });
   for (auto* v :
        {&prescribed_loads_, &external_forces_, &body_forces_, &residual_, &u_, &v_, &a_, &u_n_, &v_n_, &a_n_})
     *v = Eigen::VectorXd::Zero(dof_count());
@@ -140,10 +137,7 @@ void PlateSolver::set_state(const Eigen::VectorXd& displacement, const Eigen::Ve
   u_ = displacement;
   v_ = velocity;
   for (int n : mesh_.clamped_nodes) u_.segment<2>(2 * n).setZero(), v_.segment<2>(2 * n).setZero();
-  // Q4-EAS: the enhanced parameters are re-solved from zero at the next evaluation (local Newton).
-  for (auto& alpha : alpha_) alpha.setZero();
-  for (auto& alpha : alpha_solved_) alpha.setZero();
-  for (auto& update : alpha_update_) update.setZero();
+  with_family([](auto& family) { family.reset_state(); });
 }
 
 void PlateSolver::set_state(const Eigen::VectorXd& displacement, const Eigen::VectorXd& velocity,
@@ -157,24 +151,28 @@ void PlateSolver::set_state(const Eigen::VectorXd& displacement, const Eigen::Ve
 std::vector<double> PlateSolver::save_state() const {
   const auto n = static_cast<std::size_t>(dof_count());
   std::vector<double> out;
-  out.reserve(3 * n + alpha_.size() * kEasModes);
   for (const Eigen::VectorXd* v : {&u_, &v_, &a_}) out.insert(out.end(), v->data(), v->data() + n);
-  // Each element's parameters live on the rank that owns it: a sum over ranks of zeros elsewhere is exact.
-  std::vector<double> alpha(alpha_.size() * kEasModes, 0.0);
-  if (mesh_.element_type == ElementType::kQ4Eas)
-    for (int e : partition_.owned_elements)
-      for (int m = 0; m < kEasModes; ++m) alpha[static_cast<std::size_t>(e) * kEasModes + m] = alpha_[e](m);
-  if (size_ > 1 && !alpha.empty())
-    MPI_Allreduce(MPI_IN_PLACE, alpha.data(), static_cast<int>(alpha.size()), MPI_DOUBLE, MPI_SUM, comm_.get());
-  out.insert(out.end(), alpha.begin(), alpha.end());
+  // Each element's state (Q4-EAS: its enhanced parameters) lives on the rank that owns it: a sum over ranks of
+  // zeros elsewhere is exact.
+  std::vector<double> elements = with_family([&](const auto& family) {
+    constexpr int k = std::decay_t<decltype(family)>::kStatePerElement;
+    std::vector<double> state(static_cast<std::size_t>(family.state_size()), 0.0);
+    if (k > 0)
+      for (int e : partition_.owned_elements) family.save_state(e, &state[static_cast<std::size_t>(e) * k]);
+    return state;
+  });
+  if (size_ > 1 && !elements.empty())
+    MPI_Allreduce(MPI_IN_PLACE, elements.data(), static_cast<int>(elements.size()), MPI_DOUBLE, MPI_SUM, comm_.get());
+  out.insert(out.end(), elements.begin(), elements.end());
   return out;
 }
 
 void PlateSolver::restore_state(const std::vector<double>& state) {
   const auto n = static_cast<std::size_t>(dof_count());
-  if (state.size() != 3 * n + alpha_.size() * kEasModes)
+  const auto element_state = static_cast<std::size_t>(with_family([](const auto& f) { return f.state_size(); }));
+  if (state.size() != 3 * n + element_state)
     HALFETI_USER_ERROR("restart: the plate's state has " << state.size() << " values, this scene's plate needs "
-                                                         << 3 * n + alpha_.size() * kEasModes);
+                                                         << 3 * n + element_state);
   // The matrix pattern first: its pass evaluates the elements and the nodal elements (a cable's warm start), which
   // the caller restores after this.
   prepare_matrix();
@@ -183,9 +181,10 @@ void PlateSolver::restore_state(const std::vector<double>& state) {
     std::copy(p, p + n, v->data());
     p += n;
   }
-  for (auto& alpha : alpha_)
-    for (int m = 0; m < kEasModes; ++m) alpha(m) = *p++;
-  alpha_solved_ = alpha_;
+  with_family([&](auto& family) {
+    constexpr int k = std::decay_t<decltype(family)>::kStatePerElement;
+    for (int e = 0; k > 0 && e < family.count(); ++e) family.restore_state(e, p + static_cast<std::size_t>(e) * k);
+  });
 }
 
 std::string PlateSolver::summary() const {
@@ -193,7 +192,7 @@ std::string PlateSolver::summary() const {
   const auto& m = params_.material;
   std::ostringstream os;
   os << "structure: plate " << g.height << " m x " << g.thickness << " m, " << g.cells_across << " x "
-     << g.cells_along << (g.element == ElementType::kQ9 ? " Q9 (" : " Q4-EAS (") << mesh_.element_count()
+     << g.cells_along << " " << with_family([](const auto& f) { return f.kName; }) << " (" << mesh_.element_count()
      << " elements, " << dof_count() << " dofs), "
      << to_string(m.model) << " E = " << m.youngs_modulus << " Pa, nu = " << m.poisson_ratio
      << ", rho = " << m.density << " kg/m^3, " << to_string(m.hypothesis) << " per unit depth, "
@@ -266,18 +265,20 @@ void PlateSolver::apply_increment(const double* du) {
   if (!std::isfinite(largest)) HALFETI_NUMERICAL_ERROR("structure: Newton increment is not finite (NaN/Inf)");
   increment_norm_ = largest;
   last_.increment_norm = largest;
-  // Q4-EAS element state after the increment (Simo & Armero 1992): alpha = alpha_solved + (d alpha / du) du_e,
-  // the linearisation of the condensed enhanced equilibrium at the last full assembly.
-  for (int e : partition_.owned_elements) {
-    if (mesh_.element_type != ElementType::kQ4Eas) break;
-    Eigen::Matrix<double, kQ4Dofs, 1> du_e;  // component-major
-    for (int a = 0; a < kQ4Nodes; ++a) {
-      const int n = mesh_.quads[e][a];
-      for (int c = 0; c < 2; ++c) du_e(kQ4Nodes * c + a) = clamped_[n] ? 0.0 : du[2 * n + c];
+  // The elements' own state after the increment (Q4-EAS: the enhanced parameters).
+  with_family([&](auto& family) {
+    using Family = std::decay_t<decltype(family)>;
+    if (Family::kStatePerElement == 0) return;
+    constexpr int nn = Family::kNodes;
+    Eigen::Matrix<double, 2 * nn, 1> du_e;  // component-major
+    for (int e : partition_.owned_elements) {
+      for (int a = 0; a < nn; ++a) {
+        const int n = family.nodes(e)[a];
+        for (int c = 0; c < 2; ++c) du_e(nn * c + a) = clamped_[n] ? 0.0 : du[2 * n + c];
+      }
+      family.apply_increment(e, du_e);
     }
-    alpha_[e] = alpha_solved_[e];
-    alpha_[e].noalias() += alpha_update_[e] * du_e;
-  }
+  });
   ++last_.newton_iterations;
 }
 
@@ -331,7 +332,7 @@ bool PlateSolver::converged() const {
 void PlateSolver::end_step() {
   if (mode_ == Mode::kDynamic) {
     update_acceleration();
-    v_ = v_n_ + dt_ * ((1.0 - params_.newmark.gamma) * a_n_ + params_.newmark.gamma * a_);
+    newmark_.velocity(v_n_, a_n_, a_, dt_, v_);
   }
   last_.residual_norm = residual_norm_;
 }
@@ -398,8 +399,7 @@ double PlateSolver::strain_energy() const {
 }
 
 double PlateSolver::element_energy(int k) const {
-  return mesh_.element_type == ElementType::kQ9 ? integrator_->energy(geometry_[k], element_displacement(k))
-                                                : integrator4_->energy(geometry4_[k], quad_displacement(k), alpha_[k]);
+  return with_family([&](const auto& family) { return family.energy(k, family.displacement(k, u_)); });
 }
 
 double PlateSolver::gravity_potential_energy() const {
@@ -412,28 +412,26 @@ double PlateSolver::gravity_potential_energy() const {
 
 double PlateSolver::kinetic_energy() const {
   double e = 0.0;
-  for (int k : partition_.owned_elements) {
-    const int* nodes = mesh_.element_nodes(k);
-    const int nn = mesh_.nodes_per_element();
-    for (int a = 0; a < nn; ++a)
-      for (int b = 0; b < nn; ++b)
-        e += 0.5 * (nn == kQ9Nodes ? mass_[k](a, b) : mass4_[k](a, b)) *
-             v_.segment<2>(2 * nodes[a]).dot(v_.segment<2>(2 * nodes[b]));
-  }
+  with_family([&](const auto& family) {
+    constexpr int nn = std::decay_t<decltype(family)>::kNodes;
+    for (int k : partition_.owned_elements) {
+      const auto& nodes = family.nodes(k);
+      for (int a = 0; a < nn; ++a)
+        for (int b = 0; b < nn; ++b)
+          e += 0.5 * family.mass(k)(a, b) * v_.segment<2>(2 * nodes[a]).dot(v_.segment<2>(2 * nodes[b]));
+    }
+  });
   return sum_over_ranks(e);
 }
 
 double PlateSolver::element_von_mises(int element) const {
   HALFETI_CHECK(element >= 0 && element < mesh_.element_count(), "no element " << element);
-  double sum = 0.0;
-  if (mesh_.element_type == ElementType::kQ4Eas) {
-    for (const auto& s : integrator4_->cauchy_at_points(geometry4_[element], quad_displacement(element), alpha_[element]))
-      sum += von_mises(s);
-    return sum / 4.0;
-  }
-  for (const auto& s : integrator_->cauchy_at_points(geometry_[element], element_displacement(element)))
-    sum += von_mises(s);
-  return sum / 9.0;
+  return with_family([&](const auto& family) {
+    double sum = 0.0;
+    const auto points = family.cauchy_at_points(element, family.displacement(element, u_));
+    for (const auto& s : points) sum += von_mises(s);
+    return sum / static_cast<double>(points.size());
+  });
 }
 
 void PlateSolver::element_fields(std::vector<double>& von_mises, std::vector<double>& energy_density) const {
@@ -441,8 +439,7 @@ void PlateSolver::element_fields(std::vector<double>& von_mises, std::vector<dou
   std::vector<double> both(2 * static_cast<std::size_t>(n), 0.0);  // each element from its one owner, summed
   const double density = params_.material.density;
   for (int k : partition_.owned_elements) {
-    const bool q4 = mesh_.element_type == ElementType::kQ4Eas;
-    const double area = (q4 ? mass4_[k].sum() : mass_[k].sum()) / density;  // the scalar mass sums to rho A
+    const double area = with_family([&](const auto& f) { return f.mass(k).sum(); }) / density;  // sums to rho A
     both[2 * k] = element_von_mises(k);
     both[2 * k + 1] = element_energy(k) / area;
   }
@@ -457,15 +454,10 @@ void PlateSolver::element_fields(std::vector<double>& von_mises, std::vector<dou
 
 double PlateSolver::max_von_mises() const {
   double m = 0.0;
-  for (int k : partition_.owned_elements) {
-    if (mesh_.element_type == ElementType::kQ4Eas) {
-      for (const auto& s : integrator4_->cauchy_at_points(geometry4_[k], quad_displacement(k), alpha_[k]))
-        m = std::max(m, von_mises(s));
-      continue;
-    }
-    for (const auto& s : integrator_->cauchy_at_points(geometry_[k], element_displacement(k)))
-      m = std::max(m, von_mises(s));
-  }
+  with_family([&](const auto& family) {
+    for (int k : partition_.owned_elements)
+      for (const auto& s : family.cauchy_at_points(k, family.displacement(k, u_))) m = std::max(m, von_mises(s));
+  });
   double global = m;
   if (size_ > 1) MPI_Allreduce(&m, &global, 1, MPI_DOUBLE, MPI_MAX, comm_.get());
   return global;

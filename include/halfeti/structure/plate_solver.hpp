@@ -33,18 +33,19 @@
 #include <Eigen/Dense>
 #include <memory>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "halfeti/core/communicator.hpp"
 #include "halfeti/core/nodal_element.hpp"
 #include "halfeti/core/timers.hpp"
 #include "halfeti/excitation/ground_motion.hpp"
+#include "halfeti/structure/element_family.hpp"
 #include "halfeti/structure/material.hpp"
+#include "halfeti/structure/newmark.hpp"
 #include "halfeti/structure/petsc_owner.hpp"
 #include "halfeti/structure/plate_mesh.hpp"
 #include "halfeti/structure/plate_partition.hpp"
-#include "halfeti/structure/q4_eas_element.hpp"
-#include "halfeti/structure/q9_element.hpp"
 
 namespace halfeti::structure {
 
@@ -56,11 +57,6 @@ struct PlateMaterialParameters {
   PlaneHypothesis hypothesis = PlaneHypothesis::kPlaneStrain;
   bool selective_reduced_integration =
       true;  // 2x2 Gauss on the lambda part (plane strain), see q9_element.hpp
-};
-
-struct NewmarkParameters {
-  double beta = 0.25;  // (0, 0.5]; 1/4 with gamma 1/2 is the trapezoidal rule (energy-conserving, 2nd order)
-  double gamma = 0.5;  // [0.5, 1]; > 0.5 adds numerical damping
 };
 
 struct NewtonParameters {
@@ -197,9 +193,20 @@ class PlateSolver {
   // The plate-alone Newton loop of step() and solve_static().
   void newton_loop(const char* what);
   void compute_external(double t);
-  Q9Coordinates element_displacement(int e) const;
-  double element_energy(int e) const;  // J/m, the element's strain energy (either element type)
-  Q4Coordinates quad_displacement(int e) const;
+  double element_energy(int e) const;  // J/m, the element's strain energy
+  // The solid elements' terms of one assembly (compute_newton_terms), written once over the element families.
+  template <typename Family, typename ElementSink>
+  void element_terms(Family& family, ElementSink& element_sink, bool with_matrix, bool with_tangent,
+                     double mass_coefficient, bool inertia_in_residual, std::string& failure);
+  // Calls f(family) with the plate's element family (Q9Family or Q4EasFamily).
+  template <typename F>
+  decltype(auto) with_family(F&& f) {
+    return std::visit(std::forward<F>(f), family_);
+  }
+  template <typename F>
+  decltype(auto) with_family(F&& f) const {
+    return std::visit(std::forward<F>(f), family_);
+  }
   void update_acceleration();
   Eigen::VectorXd gather_in_node_order(Vec v);  // a distributed Vec of the owned layout, on every rank
   double sum_over_ranks(double local) const;
@@ -209,18 +216,9 @@ class PlateSolver {
   const excitation::GroundMotion* ground_;
   PlateMesh mesh_;
   std::unique_ptr<Material> material_;
-  std::unique_ptr<HyperelasticQ9> integrator_;
-  std::vector<Q9Geometry> geometry_;
-  std::vector<Eigen::Matrix<double, kQ9Nodes, kQ9Nodes>> mass_;  // scalar consistent mass per element
-  // Q4-EAS (mesh_.element_type == kQ4Eas): integrator, geometry, mass, and the element state: alpha_, the start
-  // of every local solve of the enhanced parameters, changed only by apply_increment() to alpha_solved_ + (d
-  // alpha / du) du (both from the last full assembly), so the iterates do not depend on which evaluations
-  // (residual-only or full) came in between.
-  std::unique_ptr<HyperelasticQ4Eas> integrator4_;
-  std::vector<Q4EasGeometry> geometry4_;
-  std::vector<Eigen::Matrix<double, kQ4Nodes, kQ4Nodes>> mass4_;
-  std::vector<EasParameters> alpha_, alpha_solved_;
-  std::vector<EasUpdate> alpha_update_;
+  // The solid elements (element_family.hpp): geometry, mass and element state of the mesh's element type.
+  std::variant<Q9Family, Q4EasFamily> family_;
+  Newmark newmark_;
   Eigen::VectorXd mass_row_sum_;                                 // per node, for body forces
   std::vector<bool> clamped_;
   std::vector<NodalElement*> nodal_elements_;
