@@ -45,7 +45,9 @@ void element_force_and_tangent(benchmark::State& state, structure::ElementType t
   state.SetLabel(std::string(Family::kName) + (tangent ? " force + tangent" : " force"));
 }
 
-void BM_Q9Element(benchmark::State& s) { element_force_and_tangent<structure::Q9Family>(s, structure::ElementType::kQ9); }
+void BM_Q9Element(benchmark::State& s) {
+  element_force_and_tangent<structure::Q9Family>(s, structure::ElementType::kQ9);
+}
 void BM_Q4EasElement(benchmark::State& s) {
   element_force_and_tangent<structure::Q4EasFamily>(s, structure::ElementType::kQ4Eas);
 }
@@ -72,12 +74,14 @@ void BM_CableElement(benchmark::State& state) {
 BENCHMARK(BM_CableElement);
 
 void BM_PairSearch(benchmark::State& state) {
-  // A block of water on a square lattice, dx = 1.5 mm, h = 1.33 dx (the paper scenes' ratio), side n particles.
+  // A block of water on a square lattice, dx = 1.5 mm, h = 1.33 dx (the paper scenes' ratio), side n
+  // particles.
   const int n = static_cast<int>(state.range(0));
   const double dx = 0.0015;
   sph::Kernel kernel;
   kernel.h = 1.33 * dx;
-  const parallel::CellGrid grid = parallel::CellGrid::covering(-dx, -dx, n * dx + dx, n * dx + dx, kernel.support());
+  const parallel::CellGrid grid =
+      parallel::CellGrid::covering(-dx, -dx, n * dx + dx, n * dx + dx, kernel.support());
   std::vector<double> x, y;
   std::vector<std::int64_t> gid;
   std::mt19937 rng(1);
@@ -104,8 +108,8 @@ void BM_PairSearch(benchmark::State& state) {
     benchmark::DoNotOptimize(pairs.j.data());
   }
   state.counters["pairs"] = static_cast<double>(pairs.j.size());
-  state.counters["pairs_per_second"] =
-      benchmark::Counter(static_cast<double>(pairs.j.size()) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["pairs_per_second"] = benchmark::Counter(
+      static_cast<double>(pairs.j.size()) * state.iterations(), benchmark::Counter::kIsRate);
   state.counters["ns_per_particle"] =
       benchmark::Counter(static_cast<double>(count) * state.iterations(),
                          benchmark::Counter::kIsRate | benchmark::Counter::kInvert);

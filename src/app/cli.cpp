@@ -50,22 +50,33 @@ double parse_memory_size(const std::string& text, const char* option) {
   std::string unit(end ? end : "");
   if (!unit.empty() && (unit.back() == 'B' || unit.back() == 'b')) unit.pop_back();
   double scale = 0.0;
-  if (unit.empty()) scale = 1.0;
-  else if (unit == "k" || unit == "K") scale = 1e3;
-  else if (unit == "M") scale = 1e6;
-  else if (unit == "G") scale = 1e9;
-  else if (unit == "T") scale = 1e12;
-  else if (unit == "Ki") scale = 1024.0;
-  else if (unit == "Mi") scale = 1024.0 * 1024.0;
-  else if (unit == "Gi") scale = 1024.0 * 1024.0 * 1024.0;
-  else if (unit == "Ti") scale = 1024.0 * 1024.0 * 1024.0 * 1024.0;
+  if (unit.empty())
+    scale = 1.0;
+  else if (unit == "k" || unit == "K")
+    scale = 1e3;
+  else if (unit == "M")
+    scale = 1e6;
+  else if (unit == "G")
+    scale = 1e9;
+  else if (unit == "T")
+    scale = 1e12;
+  else if (unit == "Ki")
+    scale = 1024.0;
+  else if (unit == "Mi")
+    scale = 1024.0 * 1024.0;
+  else if (unit == "Gi")
+    scale = 1024.0 * 1024.0 * 1024.0;
+  else if (unit == "Ti")
+    scale = 1024.0 * 1024.0 * 1024.0 * 1024.0;
   const double bytes = number * scale;
   if (end == text.c_str() || scale == 0.0 || !(bytes >= 1.0) || !std::isfinite(bytes))
     HALFETI_USER_ERROR(option << " takes a memory size such as 8G, 512M or 2GiB, got '" << text << "'");
   return bytes;
 }
 
-std::string version_text() { return std::string("halfeti ") + kVersion; }
+std::string version_text() {
+  return std::string("halfeti ") + kVersion;
+}
 
 Command parse_command_line(const std::vector<std::string>& args) {
   Command c;
@@ -80,7 +91,8 @@ Command parse_command_line(const std::vector<std::string>& args) {
     return c;
   }
   if (word == "reference") {
-    if (args.size() > 1) HALFETI_USER_ERROR("'halfeti reference' takes no arguments, found '" << args[1] << "'");
+    if (args.size() > 1)
+      HALFETI_USER_ERROR("'halfeti reference' takes no arguments, found '" << args[1] << "'");
     c.kind = Command::Kind::kReference;
     return c;
   }
@@ -94,7 +106,8 @@ Command parse_command_line(const std::vector<std::string>& args) {
   else if (word == "check")
     c.kind = Command::Kind::kCheck;
   else
-    HALFETI_USER_ERROR("unknown command '" << word << "'; expected run, check, cable, compare, reference, --help or --version");
+    HALFETI_USER_ERROR("unknown command '"
+                       << word << "'; expected run, check, cable, compare, reference, --help or --version");
 
   for (size_t i = 1; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -131,7 +144,8 @@ Command parse_command_line(const std::vector<std::string>& args) {
       c.max_memory = parse_memory_size(value("--max-memory"), "--max-memory");
     } else if (a == "--trace" && c.kind == Command::Kind::kRun) {
       const std::string& v = value("--trace");
-      if (v != "coupling") HALFETI_USER_ERROR("--trace takes 'coupling' (the one diagnostic trace), got '" << v << "'");
+      if (v != "coupling")
+        HALFETI_USER_ERROR("--trace takes 'coupling' (the one diagnostic trace), got '" << v << "'");
       c.trace_coupling = true;
     } else if (!a.empty() && a[0] == '-') {
       HALFETI_USER_ERROR("unknown option '" << a << "' for 'halfeti " << word << "'; try 'halfeti --help'");
@@ -141,8 +155,9 @@ Command parse_command_line(const std::vector<std::string>& args) {
       HALFETI_USER_ERROR("one scene per run: found '" << c.scene << "' and '" << a << "'");
     }
   }
-  if (c.scene.empty()) HALFETI_USER_ERROR("'halfeti " << word << "' needs a scene file, e.g. halfeti " << word
-                                                      << " inputs/validation/dambreak.yaml");
+  if (c.scene.empty())
+    HALFETI_USER_ERROR("'halfeti " << word << "' needs a scene file, e.g. halfeti " << word
+                                   << " inputs/validation/dambreak.yaml");
   return c;
 }
 

@@ -5,9 +5,9 @@
 #include <sstream>
 
 #include "halfeti/app/cli.hpp"
-#include "halfeti/app/scene_schema.hpp"
 #include "halfeti/app/petsc_session.hpp"
 #include "halfeti/app/run_size.hpp"
+#include "halfeti/app/scene_schema.hpp"
 #include "halfeti/app/simulation.hpp"
 #include "halfeti/cable/cable_tool.hpp"
 #include "halfeti/core/collective.hpp"
@@ -82,9 +82,10 @@ int execute(const std::vector<std::string>& args, MPI_Comm comm) {
         if (!unused.empty()) {
           std::string names;
           for (const auto& u : unused) names += (names.empty() ? "" : ", ") + u;
-          std::cerr << "halfeti: warning: PETSc options given after '--' that nothing used (misspelt, or for a "
-                       "solver not in use): "
-                    << names << "\n";
+          std::cerr
+              << "halfeti: warning: PETSc options given after '--' that nothing used (misspelt, or for a "
+                 "solver not in use): "
+              << names << "\n";
         }
       }
       return status;

@@ -22,7 +22,8 @@ const Registry<sph::KernelKind>& kernel_registry() {
 const Registry<sph::Scheme>& scheme_registry() {
   static const auto r = named_values<sph::Scheme>({
       {"delta", "delta-SPH: density diffusion on (eqs. 3, 5-7)", sph::Scheme::kDeltaSph},
-      {"standard", "standard SPH: no density diffusion (the paper's Figs. 13-15 comparison)", sph::Scheme::kStandard},
+      {"standard", "standard SPH: no density diffusion (the paper's Figs. 13-15 comparison)",
+       sph::Scheme::kStandard},
   });
   return r;
 }
@@ -40,13 +41,15 @@ std::shared_ptr<Schema> water_block_schema() {
   auto s = std::make_shared<Schema>("A rectangle of still water, filled on a square lattice of spacing dx.");
   s->add(Key::point("from", "lower left corner", "m").required());
   s->add(Key::point("to", "upper right corner; its y is the still free surface", "m").required());
-  s->add(Key::real("surface_amplitude", "first-mode surface A cos(pi x / L) added to the top (sloshing tests)", "m")
+  s->add(Key::real("surface_amplitude",
+                   "first-mode surface A cos(pi x / L) added to the top (sloshing tests)", "m")
              .def(0.0));
   return s;
 }
 
 std::shared_ptr<Schema> wall_schema() {
-  auto s = std::make_shared<Schema>("A rigid internal wall: a line of repulsive particles; no pair interacts across it.");
+  auto s = std::make_shared<Schema>(
+      "A rigid internal wall: a line of repulsive particles; no pair interacts across it.");
   s->add(Key::point("from", "one end", "m").required());
   s->add(Key::point("to", "the other end", "m").required());
   return s;
@@ -62,8 +65,12 @@ std::shared_ptr<const Schema> fluid_schema() {
     s->add(Key::list("water", "rectangles of still water", water_block_schema()).min_items(1).required());
     s->add(Key::list("walls", "rigid internal walls", wall_schema()));
     s->add(Key::boolean("lid", "close the tank with a wall at its top").def(false));
-    s->add(Key::real("density", "rest density rho0 (a liquid: at most 2e4)", "kg/m^3").def(1000.0).positive().at_most(2e4));
-    s->add(Key::real("sound_speed", "c0 of eq. 9; 0 chooses it by eq. 10 from the depth and the peak excitation "
+    s->add(Key::real("density", "rest density rho0 (a liquid: at most 2e4)", "kg/m^3")
+               .def(1000.0)
+               .positive()
+               .at_most(2e4));
+    s->add(Key::real("sound_speed",
+                     "c0 of eq. 9; 0 chooses it by eq. 10 from the depth and the peak excitation "
                      "(at most 1e4: water's own is 1480)",
                      "m/s")
                .def(0.0)
@@ -82,7 +89,9 @@ std::shared_ptr<const Schema> fluid_schema() {
     s->add(Key::real("alpha", "artificial viscosity coefficient alpha (eqs. 4, 8)").def(0.02).in(0.0, 1.0));
     s->add(Key::real("xsph", "XSPH coefficient (eq. 11); 0 turns it off").def(0.05).in(0.0, 1.0));
     s->add(Key::boolean("tensile_correction", "Monaghan's (2000) tensile-instability correction").def(true));
-    s->add(Key::real("wall_repulsion", "Monaghan & Kos wall strength A = this * c0^2 / h").def(0.01).positive()
+    s->add(Key::real("wall_repulsion", "Monaghan & Kos wall strength A = this * c0^2 / h")
+               .def(0.01)
+               .positive()
                .at_most(10.0));
     s->add(Key::boolean("wall_pressure", "add the kernel-truncated pressure of the wall (see docs/sph.md)")
                .def(true));
@@ -93,7 +102,10 @@ std::shared_ptr<const Schema> fluid_schema() {
                .def(1.0e-6)
                .positive()
                .at_most(1.0));
-    s->add(Key::real("cfl", "Courant number of the time step (above 1: past the usual limit, warned)").def(0.2).positive().at_most(3.0));
+    s->add(Key::real("cfl", "Courant number of the time step (above 1: past the usual limit, warned)")
+               .def(0.2)
+               .positive()
+               .at_most(3.0));
     s->add(Key::real("max_dt", "largest time step", "s").def(1e-3).positive());
     s->add(Key::real("min_dt", "time-step floor; the run stops below it", "s").def(1e-9).positive());
     s->add(Key::real("rebalance_threshold", "rebalance when max / target particles per rank exceeds this")
@@ -122,31 +134,37 @@ sph::FluidParams fluid_params(const scene::Node& root, double peak_ground_accele
   p.spacing = f.real("spacing");
   const double min_side = std::min(p.tank_length, p.tank_height);
   if (p.spacing > 0.25 * min_side)
-    HALFETI_USER_ERROR(f.key_path("spacing") << ": dx = " << p.spacing << " m leaves fewer than 4 particles across the "
-                                             << min_side << " m tank; expected dx <= " << 0.25 * min_side);
+    HALFETI_USER_ERROR(f.key_path("spacing")
+                       << ": dx = " << p.spacing << " m leaves fewer than 4 particles across the " << min_side
+                       << " m tank; expected dx <= " << 0.25 * min_side);
   for (const auto& w : f.list("water")) {
     const auto a = w.point("from"), b = w.point("to");
     sph::WaterBlock block{a[0], a[1], b[0], b[1], w.real("surface_amplitude")};
     if (!(b[0] > a[0] && b[1] > a[1]))
-      HALFETI_USER_ERROR(w.path() << ": 'to' must lie above and right of 'from', found from [" << a[0] << ", " << a[1]
-                                  << "] to [" << b[0] << ", " << b[1] << "]");
-    if (a[0] < 0 || a[1] < 0 || b[0] > p.tank_length || b[1] + std::abs(block.surface_amplitude) > p.tank_height)
-      HALFETI_USER_ERROR(w.path() << ": water from [" << a[0] << ", " << a[1] << "] to [" << b[0] << ", " << b[1]
-                                  << "] does not fit in the tank [0, " << p.tank_length << "] x [0, "
+      HALFETI_USER_ERROR(w.path() << ": 'to' must lie above and right of 'from', found from [" << a[0] << ", "
+                                  << a[1] << "] to [" << b[0] << ", " << b[1] << "]");
+    if (a[0] < 0 || a[1] < 0 || b[0] > p.tank_length ||
+        b[1] + std::abs(block.surface_amplitude) > p.tank_height)
+      HALFETI_USER_ERROR(w.path() << ": water from [" << a[0] << ", " << a[1] << "] to [" << b[0] << ", "
+                                  << b[1] << "] does not fit in the tank [0, " << p.tank_length << "] x [0, "
                                   << p.tank_height << "]");
-    // The lattice shows the surface to within a spacing: a smaller wave would live in the initial pressure only.
+    // The lattice shows the surface to within a spacing: a smaller wave would live in the initial pressure
+    // only.
     if (block.surface_amplitude != 0.0 && std::abs(block.surface_amplitude) < 0.5 * p.spacing)
-      HALFETI_USER_ERROR(w.key_path("surface_amplitude") << ": " << block.surface_amplitude
-                                                         << " m is below half the spacing (" << 0.5 * p.spacing
-                                                         << " m), which the particle lattice cannot show; use 0 or "
-                                                            "at least dx / 2");
+      HALFETI_USER_ERROR(w.key_path("surface_amplitude")
+                         << ": " << block.surface_amplitude << " m is below half the spacing ("
+                         << 0.5 * p.spacing
+                         << " m), which the particle lattice cannot show; use 0 or "
+                            "at least dx / 2");
     // Two blocks over the same place would put two particles there.
     for (std::size_t k = 0; k < p.water.size(); ++k) {
       const auto& o = p.water[k];
-      const double top = block.y1 + std::abs(block.surface_amplitude), other_top = o.y1 + std::abs(o.surface_amplitude);
-      if (std::min(block.x1, o.x1) > std::max(block.x0, o.x0) && std::min(top, other_top) > std::max(block.y0, o.y0))
-        HALFETI_USER_ERROR(w.path() << ": water from [" << a[0] << ", " << a[1] << "] to [" << b[0] << ", " << b[1]
-                                    << "] overlaps fluid.water[" << k << "]");
+      const double top = block.y1 + std::abs(block.surface_amplitude),
+                   other_top = o.y1 + std::abs(o.surface_amplitude);
+      if (std::min(block.x1, o.x1) > std::max(block.x0, o.x0) &&
+          std::min(top, other_top) > std::max(block.y0, o.y0))
+        HALFETI_USER_ERROR(w.path() << ": water from [" << a[0] << ", " << a[1] << "] to [" << b[0] << ", "
+                                    << b[1] << "] overlaps fluid.water[" << k << "]");
     }
     p.water.push_back(block);
   }
@@ -179,8 +197,8 @@ sph::FluidParams fluid_params(const scene::Node& root, double peak_ground_accele
   p.max_dt = f.real("max_dt");
   p.min_dt = f.real("min_dt");
   if (p.min_dt >= p.max_dt)
-    HALFETI_USER_ERROR(f.key_path("min_dt") << ": the floor " << p.min_dt << " s must be below max_dt " << p.max_dt
-                                            << " s");
+    HALFETI_USER_ERROR(f.key_path("min_dt")
+                       << ": the floor " << p.min_dt << " s must be below max_dt " << p.max_dt << " s");
   p.rebalance_threshold = f.real("rebalance_threshold");
   p.rebalance_interval = static_cast<int>(f.integer("rebalance_interval"));
   p.first_rank_share = f.real("first_rank_share");

@@ -1,5 +1,5 @@
-// The parts of a run: their parameters from the scene (what `halfeti check` reads), and the plate with its cables on
-// the structure's ranks.
+// The parts of a run: their parameters from the scene (what `halfeti check` reads), and the plate with its
+// cables on the structure's ranks.
 #include "halfeti/app/parts.hpp"
 
 #include <algorithm>
@@ -16,7 +16,8 @@
 namespace halfeti::app {
 
 const sph::FluidParams& Parts::require_fluid(const std::string& who) const {
-  if (!fluid_params) HALFETI_USER_ERROR(who << ": this probe reads the water, but the scene has no `fluid:` section");
+  if (!fluid_params)
+    HALFETI_USER_ERROR(who << ": this probe reads the water, but the scene has no `fluid:` section");
   return *fluid_params;
 }
 
@@ -50,17 +51,19 @@ void read_parameters(const scene::Scene& scene, Parts& parts) {
   parts.scene_dir = directory_of(scene.file);
   // The name names the output folder out/<name>: one folder name, not a path.
   const std::string name = root.section("scene").string("name");
-  const bool plain = !name.empty() && name != "." && name != ".." &&
-                     std::all_of(name.begin(), name.end(), [](char c) {
-                       return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
-                     });
+  const bool plain =
+      !name.empty() && name != "." && name != ".." && std::all_of(name.begin(), name.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+      });
   if (!plain)
-    HALFETI_USER_ERROR("scene.name '" << name << "': letters, digits, '_', '-' and '.' only (it names the folder "
-                                          "out/<name>)");
+    HALFETI_USER_ERROR("scene.name '" << name
+                                      << "': letters, digits, '_', '-' and '.' only (it names the folder "
+                                         "out/<name>)");
   parts.gravity = root.real("gravity");
   parts.motion = excitation::make_ground_motion(root.section("excitation"), parts.scene_dir);
   const double end = root.section("scene").real("end_time");
-  if (root.has("fluid")) parts.fluid_params = fluid_params(root, peak_ground_acceleration(*parts.motion, end));
+  if (root.has("fluid"))
+    parts.fluid_params = fluid_params(root, peak_ground_acceleration(*parts.motion, end));
   if (root.has("structure")) parts.structure_setup = structure_setup(root);
   if (!root.list("cables").empty() && !parts.structure_setup)
     HALFETI_USER_ERROR("cables: need a `structure:` to hold (the plate they attach to)");
@@ -71,8 +74,8 @@ void read_parameters(const scene::Scene& scene, Parts& parts) {
     parts.coupling_params = coupling_params(root);
     // The water fills its blocks except where the plate stands, as its lattice resolves it.
     auto& fp = *parts.fluid_params;
-    const auto aligned = coupling::align_plate_with_lattice(parts.structure_setup->params.geometry, fp.spacing,
-                                                            fp.water.front().x0, fp.water.front().y0);
+    const auto aligned = coupling::align_plate_with_lattice(
+        parts.structure_setup->params.geometry, fp.spacing, fp.water.front().x0, fp.water.front().y0);
     parts.plate_offsets = aligned.offsets;
     fp.exclusions.push_back(aligned.exclusion);
   }
@@ -92,7 +95,8 @@ std::vector<ProbeColumn> build_parameters(const scene::Scene& scene, Parts& part
 }
 
 void build_parts(Parts& parts, MPI_Comm comm, bool trace_coupling) {
-  if (parts.fluid_params) parts.fluid = std::make_unique<sph::Fluid>(comm, *parts.fluid_params, parts.motion.get());
+  if (parts.fluid_params)
+    parts.fluid = std::make_unique<sph::Fluid>(comm, *parts.fluid_params, parts.motion.get());
   if (parts.structure_setup) build_structure(parts, comm);
   if (!parts.coupling_params) return;
   auto& cp = *parts.coupling_params;
@@ -110,8 +114,8 @@ void build_parts(Parts& parts, MPI_Comm comm, bool trace_coupling) {
   }
 }
 
-// The plate and its cables live on the first structure.ranks world ranks (the structure's own communicator; rank 0
-// is always one of them and holds what probes and outputs read).
+// The plate and its cables live on the first structure.ranks world ranks (the structure's own communicator;
+// rank 0 is always one of them and holds what probes and outputs read).
 void build_structure(Parts& parts, MPI_Comm comm) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
@@ -122,12 +126,13 @@ void build_structure(Parts& parts, MPI_Comm comm) {
   parts.structure_rank = member;
   if (!parts.structure_rank) return;
   const StructureSetup& s = *parts.structure_setup;
-  parts.plate = std::make_unique<structure::PlateSolver>(parts.structure_comm.get(), s.params, parts.motion.get());
+  parts.plate =
+      std::make_unique<structure::PlateSolver>(parts.structure_comm.get(), s.params, parts.motion.get());
   for (const auto& l : s.point_loads) parts.plate->add_point_load(parts.plate->mesh().node(l.node), l.force);
   for (const auto& c : parts.cable_setups) {
     const int node = parts.plate->mesh().node(c.node);
-    parts.cables.push_back(std::make_unique<cable::CableElement>(c.anchor, node,
-                                                                 cable::cable_properties(c.set, c.unstretched_length)));
+    parts.cables.push_back(std::make_unique<cable::CableElement>(
+        c.anchor, node, cable::cable_properties(c.set, c.unstretched_length)));
     parts.plate->add_nodal_element(parts.cables.back().get());
   }
   // One evaluation at the initial geometry, so that t = 0 probes read the initial tension.

@@ -18,7 +18,9 @@ PetscSession::PetscSession(const std::vector<std::string>& options) {
     HALFETI_USER_ERROR("PETSc did not start with the options given after '--'");
 }
 
-PetscSession::~PetscSession() { PetscFinalize(); }
+PetscSession::~PetscSession() {
+  PetscFinalize();
+}
 
 std::vector<std::string> PetscSession::unused_options() const {
   PetscInt n = 0;

@@ -12,8 +12,8 @@
 #include <map>
 #include <sstream>
 
-#include "halfeti/core/error.hpp"
 #include "halfeti/core/collective.hpp"
+#include "halfeti/core/error.hpp"
 #include "halfeti/core/files.hpp"
 #include "halfeti/io/run_log.hpp"
 
@@ -25,7 +25,9 @@ void flatten(const YAML::Node& n, const std::string& path, std::map<std::string,
   switch (n.Type()) {
     case YAML::NodeType::Map:
       if (n.size() == 0) out[path] = "{}";
-      for (const auto& kv : n) flatten(kv.second, path.empty() ? kv.first.as<std::string>() : path + "." + kv.first.as<std::string>(), out);
+      for (const auto& kv : n)
+        flatten(kv.second,
+                path.empty() ? kv.first.as<std::string>() : path + "." + kv.first.as<std::string>(), out);
       break;
     case YAML::NodeType::Sequence:
       out[path + ".size"] = std::to_string(n.size());
@@ -42,7 +44,6 @@ void flatten(const YAML::Node& n, const std::string& path, std::map<std::string,
 bool may_change(const std::string& key) {
   return key == "scene.end_time" || key == "scene.description" || key.rfind("output.", 0) == 0;
 }
-
 
 }  // namespace
 
@@ -87,8 +88,11 @@ std::vector<std::string> run_outputs(const std::string& dir) {
     if (d == nullptr) continue;
     while (const dirent* e = ::readdir(d)) {
       const std::string n = e->d_name;
-      const auto ends = [&](const std::string& s) { return n.size() > s.size() && n.compare(n.size() - s.size(), s.size(), s) == 0; };
-      if (ends(".h5") || ends(".xdmf") || ends(".partial") || ends(".tmp")) out.push_back(dir + "/" + sub + "/" + n);
+      const auto ends = [&](const std::string& s) {
+        return n.size() > s.size() && n.compare(n.size() - s.size(), s.size(), s) == 0;
+      };
+      if (ends(".h5") || ends(".xdmf") || ends(".partial") || ends(".tmp"))
+        out.push_back(dir + "/" + sub + "/" + n);
     }
     ::closedir(d);
   }
@@ -129,16 +133,19 @@ std::unique_ptr<io::Checkpoint> read_restart(const std::string& restart, const s
   checkpoint_path = io::resolve_checkpoint(restart);
   auto checkpoint = std::make_unique<io::Checkpoint>(io::read_checkpoint(checkpoint_path));
   const auto scene_text = checkpoint->texts.find("scene");
-  if (scene_text == checkpoint->texts.end()) HALFETI_USER_ERROR("restart: '" << checkpoint_path << "' holds no scene");
+  if (scene_text == checkpoint->texts.end())
+    HALFETI_USER_ERROR("restart: '" << checkpoint_path << "' holds no scene");
   const std::string changed = changed_physics_key(scene_text->second, scene.resolved_text());
   if (!changed.empty())
-    HALFETI_USER_ERROR(scene.file << ": the scene changes " << changed << " from the checkpoint '" << checkpoint_path
-                                  << "'; a continued run may change only scene.end_time, scene.description and "
-                                     "output.*");
+    HALFETI_USER_ERROR(
+        scene.file << ": the scene changes " << changed << " from the checkpoint '" << checkpoint_path
+                   << "'; a continued run may change only scene.end_time, scene.description and "
+                      "output.*");
   const double end = scene.root().section("scene").real("end_time");
   if (!(checkpoint->time < end))
-    HALFETI_USER_ERROR("restart: the checkpoint is at t = " << checkpoint->time << " s, not before scene.end_time = "
-                                                            << end << " s (raise it with --set scene.end_time=...)");
+    HALFETI_USER_ERROR("restart: the checkpoint is at t = " << checkpoint->time
+                                                            << " s, not before scene.end_time = " << end
+                                                            << " s (raise it with --set scene.end_time=...)");
   return checkpoint;
 }
 
@@ -153,7 +160,8 @@ bool prepare_run_folder(MPI_Comm comm, const std::string& out_dir, const io::Che
     if (continuing) {
       // Checkpoints after the one continued from belong to the run being replaced.
       for (const auto& f : io::list_checkpoints(out_dir + "/checkpoints"))
-        if (f > out_dir + "/checkpoints/" + io::checkpoint_file_name(checkpoint->steps)) std::remove(f.c_str());
+        if (f > out_dir + "/checkpoints/" + io::checkpoint_file_name(checkpoint->steps))
+          std::remove(f.c_str());
       return;
     }
     const auto earlier = run_outputs(out_dir);

@@ -20,7 +20,8 @@ std::string at(double t, long long step) {
 void RunHealth::check_cables(MPI_Comm comm, const Parts& parts, double t, long long step) {
   const std::size_t n = parts.cable_setups.size();
   if (n == 0) return;
-  // Per cable: slack (1/0), the shortfall L0 - chord [m], the larger end stress of one cable [Pa], the plate end.
+  // Per cable: slack (1/0), the shortfall L0 - chord [m], the larger end stress of one cable [Pa], the plate
+  // end.
   std::vector<double> s(5 * n, 0.0);
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
@@ -60,7 +61,8 @@ void RunHealth::check_cables(MPI_Comm comm, const Parts& parts, double t, long l
       std::ostringstream os;
       os << at(t, step) << "cable '" << name << "' taut again after "
          << t - events_[static_cast<std::size_t>(open_[i])].time
-         << " s slack: it snaps (the snap load, its peak stress, is in summary.json; a smaller structure.time_step resolves it)";
+         << " s slack: it snaps (the snap load, its peak stress, is in summary.json; a smaller "
+            "structure.time_step resolves it)";
       open("cable_snap", os.str());
       cables_[i] = Cable::kSnapped;
     } else if (!slack && was == Cable::kUnknown) {
@@ -97,7 +99,8 @@ void RunHealth::announce(io::RunLog& log, const HealthLog& fluid) {
 HealthLog RunHealth::merged(const HealthLog& fluid) const {
   HealthLog all = fluid;
   all.insert(all.end(), events_.begin(), events_.end());
-  std::stable_sort(all.begin(), all.end(), [](const HealthEvent& a, const HealthEvent& b) { return a.step < b.step; });
+  std::stable_sort(all.begin(), all.end(),
+                   [](const HealthEvent& a, const HealthEvent& b) { return a.step < b.step; });
   return all;
 }
 

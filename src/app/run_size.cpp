@@ -11,14 +11,14 @@
 namespace halfeti::app {
 
 namespace {
-// Measured on cosine_cable, 1 rank (peak resident memory at dx 3, 1.5, 0.75 mm: 52.6, 63.6, 104.2 MB for 3,246,
-// 13,294, 52,772 particles): about 50 MB of libraries and 1.03 kB per particle; a 64 x 4096 Q9 plate took 2.6 GB,
-// about 10 kB per element.
+// Measured on cosine_cable, 1 rank (peak resident memory at dx 3, 1.5, 0.75 mm: 52.6, 63.6, 104.2 MB for
+// 3,246, 13,294, 52,772 particles): about 50 MB of libraries and 1.03 kB per particle; a 64 x 4096 Q9 plate
+// took 2.6 GB, about 10 kB per element.
 constexpr double kBaseBytes = 50e6, kBytesPerParticle = 1.1e3, kBytesPerElement = 10e3;
-// Wall time per particle-step on one rank, measured on the build machine: water alone 1.7 us (tank_shake at dx
-// 3 mm: 117 s for 20,354 steps of 3,300 particles); with the plate and cables about 2.8 us (cosine_cable at dx
-// 1.5 mm: 1,171 s for 62,825 steps of 13,294 particles on 2 ranks). Divided by the ranks (an upper bound on the
-// speed-up).
+// Wall time per particle-step on one rank, measured on the build machine: water alone 1.7 us (tank_shake at
+// dx 3 mm: 117 s for 20,354 steps of 3,300 particles); with the plate and cables about 2.8 us (cosine_cable
+// at dx 1.5 mm: 1,171 s for 62,825 steps of 13,294 particles on 2 ranks). Divided by the ranks (an upper
+// bound on the speed-up).
 constexpr double kSecondsPerParticleStep = 1.7e-6, kSecondsPerParticleStepCoupled = 2.8e-6;
 
 double machine_memory() {
@@ -35,8 +35,9 @@ double machine_memory() {
 
 std::string SizeEstimate::describe() const {
   std::ostringstream os;
-  os << "about " << static_cast<long long>(particles) << " particles, " << plate_elements << " plate elements ("
-     << plate_dofs << " dofs), " << std::setprecision(3) << bytes_per_rank / 1e9 << " GB on the busiest rank";
+  os << "about " << static_cast<long long>(particles) << " particles, " << plate_elements
+     << " plate elements (" << plate_dofs << " dofs), " << std::setprecision(3) << bytes_per_rank / 1e9
+     << " GB on the busiest rank";
   if (machine_bytes > 0) os << " (this machine has " << machine_bytes / 1e9 << " GB)";
   if (steps > 0) os << "; at least " << static_cast<long long>(std::ceil(steps)) << " steps";
   if (wall_seconds > 0)
@@ -75,12 +76,13 @@ SizeEstimate estimate_size(const scene::Scene& scene, const Parts& parts, int ra
   const double limit = max_memory > 0.0 ? max_memory : e.machine_bytes;
   if (limit > 0 && e.bytes_per_rank > limit) {
     // The key of the part that takes most of it.
-    const bool water = kBytesPerParticle * e.particles > kBytesPerElement * static_cast<double>(e.plate_elements);
-    HALFETI_USER_ERROR(scene.file << ": " << (water ? "fluid.spacing" : "structure.cells_along")
-                                  << ": the run would need " << e.describe() << " on " << ranks
-                                  << " rank(s), above "
-                                  << (max_memory > 0.0 ? "--max-memory " : "this machine's ") << std::setprecision(3)
-                                  << limit / 1e9 << " GB; coarsen it or run on more ranks");
+    const bool water =
+        kBytesPerParticle * e.particles > kBytesPerElement * static_cast<double>(e.plate_elements);
+    HALFETI_USER_ERROR(
+        scene.file << ": " << (water ? "fluid.spacing" : "structure.cells_along") << ": the run would need "
+                   << e.describe() << " on " << ranks << " rank(s), above "
+                   << (max_memory > 0.0 ? "--max-memory " : "this machine's ") << std::setprecision(3)
+                   << limit / 1e9 << " GB; coarsen it or run on more ranks");
   }
   return e;
 }

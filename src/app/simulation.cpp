@@ -1,9 +1,9 @@
 #include "halfeti/app/simulation.hpp"
 
-#include <algorithm>
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -29,8 +29,8 @@ std::string format(const char* fmt, double a) {
   return buf;
 }
 
-// The structure solves on its own ranks (world rank 0 among them); its failure must stop every rank together (no
-// rank may be left waiting in a collective call).
+// The structure solves on its own ranks (world rank 0 among them); its failure must stop every rank together
+// (no rank may be left waiting in a collective call).
 template <class Work>
 void on_structure_rank(MPI_Comm comm, bool structure_rank, Work&& work) {
   collective_outcome(comm, 0, structure_rank, work);
@@ -38,23 +38,31 @@ void on_structure_rank(MPI_Comm comm, bool structure_rank, Work&& work) {
 
 // The signal a run was asked to stop by (0: none), set by the handler, read at each step's end.
 volatile std::sig_atomic_t g_stop_signal = 0;
-extern "C" void request_stop(int signal) { g_stop_signal = signal; }
+extern "C" void request_stop(int signal) {
+  g_stop_signal = signal;
+}
 
 const char* signal_name(int s) {
   switch (s) {
-    case SIGTERM: return "SIGTERM";
-    case SIGINT: return "SIGINT";
-    case SIGUSR1: return "SIGUSR1";
-    default: return "a signal";
+    case SIGTERM:
+      return "SIGTERM";
+    case SIGINT:
+      return "SIGINT";
+    case SIGUSR1:
+      return "SIGUSR1";
+    default:
+      return "a signal";
   }
 }
 
-// The next time of an output schedule once the run has reached t: the sequence interval, interval + interval, ...
-// (each the sum of the one before and the interval), skipping whole intervals at once when a step spans very many
-// (an interval far below the time step) and never stuck where the interval is below the time's round-off.
+// The next time of an output schedule once the run has reached t: the sequence interval, interval + interval,
+// ... (each the sum of the one before and the interval), skipping whole intervals at once when a step spans
+// very many (an interval far below the time step) and never stuck where the interval is below the time's
+// round-off.
 double next_in_schedule(double next, double interval, double t, double tol) {
   if (!(interval > 0.0)) return next;
-  if (const double behind = (t + tol - next) / interval; behind > 1000.0) next += std::floor(behind) * interval;
+  if (const double behind = (t + tol - next) / interval; behind > 1000.0)
+    next += std::floor(behind) * interval;
   while (next <= t + tol) {
     const double after = next + interval;
     next = after > next ? after : std::nextafter(t + tol, HUGE_VAL);
@@ -96,19 +104,21 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
     tank_fields_ = std::make_unique<io::FieldSeries>(comm_, fields, "tank");
   }
   if (parts_.structure_setup) plate_fields_ = std::make_unique<io::FieldSeries>(comm_, fields, "plate");
-  if (!parts_.cable_setups.empty()) cable_fields_ = std::make_unique<io::FieldSeries>(comm_, fields, "cables");
+  if (!parts_.cable_setups.empty())
+    cable_fields_ = std::make_unique<io::FieldSeries>(comm_, fields, "cables");
   if (checkpoint) {
     ScopedTimer timer(timers_, "restart");
     restore(*checkpoint);
   }
   std::vector<std::string> names;
   for (const auto& p : probes_) names.push_back(p.name);
-  // A continued run carries the probe rows up to the checkpoint (from its own folder or the one it came from),
-  // continues the field series in its own folder, and appends to its log.
+  // A continued run carries the probe rows up to the checkpoint (from its own folder or the one it came
+  // from), continues the field series in its own folder, and appends to its log.
   std::vector<std::string> carried;
   collective_outcome(comm_, 0, rank_ == 0, [&] {
     if (checkpoint)
-      carried = probe_rows_until(run_folder_of(restart_path_) + "/probes.csv", io::ProbeWriter::header(names), t_);
+      carried =
+          probe_rows_until(run_folder_of(restart_path_) + "/probes.csv", io::ProbeWriter::header(names), t_);
   });
   collective_outcome(comm_, 0, true, [&] {  // rank 0 opens the file: its failure is every rank's
     probe_out_ = std::make_unique<io::ProbeWriter>(out_dir_ + "/probes.csv", names, rank_ == 0, carried);
@@ -117,8 +127,9 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
     for (auto* series : {fluid_fields_.get(), plate_fields_.get(), cable_fields_.get(), tank_fields_.get()})
       if (series) series->resume(t_);
   }
-  collective_outcome(comm_, 0, true,
-                     [&] { log_ = std::make_unique<io::RunLog>(out_dir_ + "/log.txt", rank_ == 0, options_.echo, continuing_); });
+  collective_outcome(comm_, 0, true, [&] {
+    log_ = std::make_unique<io::RunLog>(out_dir_ + "/log.txt", rank_ == 0, options_.echo, continuing_);
+  });
   collective_outcome(comm_, 0, rank_ == 0, [&] {
     std::vector<std::string> units, kinds;
     for (const auto& p : probes_) {
@@ -126,9 +137,9 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
       kinds.push_back(p.kind);
     }
     io::write_file_atomically(out_dir_ + "/probes.json", io::probe_columns_json(names, units, kinds));
-    io::write_file_atomically(out_dir_ + "/scene.resolved.yaml", std::string("# resolved by halfeti ") + kVersion +
-                                                                    " from " + scene_.file + "\n" +
-                                                                    scene_.resolved_text());
+    io::write_file_atomically(out_dir_ + "/scene.resolved.yaml", std::string("# resolved by halfeti ") +
+                                                                     kVersion + " from " + scene_.file +
+                                                                     "\n" + scene_.resolved_text());
   });
 }
 
@@ -165,20 +176,22 @@ void Simulation::step_structure(double t, double dt) {
 
 coupling::InterfaceParticles Simulation::interface_of(const sph::Fluid& f) {
   const auto& grad = f.renormalised_density_gradient();
-  return {f.owned_count(), f.gid().data(), f.x().data(),    f.y().data(), f.vx().data(),
-          f.vy().data(),   f.mass().data(), grad.empty() ? nullptr : grad.data()};
+  return {f.owned_count(), f.gid().data(), f.x().data(),    f.y().data(),
+          f.vx().data(),   f.vy().data(),  f.mass().data(), grad.empty() ? nullptr : grad.data()};
 }
 
-// One coupled step (DESIGN.md "One time step"): fluid forces and prediction, the interface gathered to the plate's
-// rank, the plate and the invaders solved together (eq. 21), the corrections handed back (eqs. 4, 22-24), then
-// the fluid finishes its step (health, migration) and the plate's new outline bars pairs across it.
+// One coupled step (DESIGN.md "One time step"): fluid forces and prediction, the interface gathered to the
+// plate's rank, the plate and the invaders solved together (eq. 21), the corrections handed back (eqs. 4,
+// 22-24), then the fluid finishes its step (health, migration) and the plate's new outline bars pairs across
+// it.
 double Simulation::advance_coupled() {
   if (parts_.coupling->parameters().implicit_exchange()) return advance_coupled_implicit();
   sph::Fluid& f = *parts_.fluid;
   f.compute_forces();
   const double t = f.time(), dt = f.dt();
   const bool plate_wall = parts_.coupling->parameters().plate_wall;
-  if (plate_wall) parts_.coupling->set_fluid_loads(f.plate_wall_loads(), dt);  // the water's wall force on the plate
+  if (plate_wall)
+    parts_.coupling->set_fluid_loads(f.plate_wall_loads(), dt);  // the water's wall force on the plate
   f.predict();
   if (parts_.plate) load_cables(t + dt);
   {
@@ -221,14 +234,16 @@ void Simulation::sample(double t) {
   row.reserve(probes_.size());
   for (auto& p : probes_) row.push_back(p.sample(t));
   probe_out_->write(t, row);
-  if (parts_.fluid) max_density_variation_ = std::max(max_density_variation_, parts_.fluid->max_density_variation());
+  if (parts_.fluid)
+    max_density_variation_ = std::max(max_density_variation_, parts_.fluid->max_density_variation());
 }
 
-// Whether every rank should stop at this step's end: a signal reached one of them, or (rank 0's clock) the next
-// step and a checkpoint would not fit in --max-wall. One reduction per step; the reason on every rank.
+// Whether every rank should stop at this step's end: a signal reached one of them, or (rank 0's clock) the
+// next step and a checkpoint would not fit in --max-wall. One reduction per step; the reason on every rank.
 std::string Simulation::stop_reason(double wall, double step_wall) {
   int why[3] = {static_cast<int>(g_stop_signal), 0, 0};
-  if (rank_ == 0 && options_.max_wall > 0.0 && wall + 2.0 * step_wall + 2.0 * last_checkpoint_wall_ >= options_.max_wall)
+  if (rank_ == 0 && options_.max_wall > 0.0 &&
+      wall + 2.0 * step_wall + 2.0 * last_checkpoint_wall_ >= options_.max_wall)
     why[1] = 1;
   if (rank_ == 0 && !output_failure().empty()) why[2] = 1;
   MPI_Allreduce(MPI_IN_PLACE, why, 3, MPI_INT, MPI_MAX, comm_);
@@ -252,8 +267,8 @@ void Simulation::check_outputs() {
   });
 }
 
-// The steps from t_ to `end` with the outputs on their schedules; returns why the run stopped before the end (a
-// signal, the wall-time limit), "" when it got there.
+// The steps from t_ to `end` with the outputs on their schedules; returns why the run stopped before the end
+// (a signal, the wall-time limit), "" when it got there.
 std::string Simulation::run_steps(double end, double start) {
   const scene::Node out = scene_.root().section("output");
   const double probe_dt = out.real("probe_interval");
@@ -335,7 +350,8 @@ int Simulation::run() {
     write_summary("numerical_failure", wall_seconds() - start, wall_seconds() - loop_start);
     throw;
   } catch (const IoError& e) {
-    // An output that cannot be written (a full disk): said once, and in summary.json if that can still be written.
+    // An output that cannot be written (a full disk): said once, and in summary.json if that can still be
+    // written.
     try {
       log_->line(std::string("stopped: ") + e.what());
       write_summary("io_failure", wall_seconds() - start, wall_seconds() - loop_start);
@@ -347,18 +363,20 @@ int Simulation::run() {
   const double loop_wall = wall_seconds() - loop_start;
   if (!stopped.empty()) {
     write_checkpoint("at the stop");
-    log_->line("stopped: " + stopped + " at t = " + format("%.9g", t_) + " s, step " + std::to_string(steps_) +
-               "; continue with: halfeti run " + scene_.file + " --restart " + out_dir_ + " --out " + out_dir_);
+    log_->line("stopped: " + stopped + " at t = " + format("%.9g", t_) + " s, step " +
+               std::to_string(steps_) + "; continue with: halfeti run " + scene_.file + " --restart " +
+               out_dir_ + " --out " + out_dir_);
     write_summary("stopped", wall_seconds() - start, loop_wall);
     return kExitStoppedResumable;
   }
-  if (last_checkpoint_step_ != steps_) write_checkpoint("final");  // unless the schedule just wrote this step's
+  if (last_checkpoint_step_ != steps_)
+    write_checkpoint("final");  // unless the schedule just wrote this step's
   log_->line(progress_line(last_dt_, wall_seconds() - start));
   const HealthLog events = health_events();
   const HealthTally health = tally(events);
   write_summary(health.warnings > 0 ? "ok_with_warnings" : "ok", wall_seconds() - start, loop_wall);
-  log_->line("done: " + std::to_string(steps_) + " steps, " + format("%.2f", wall_seconds() - start) + " s wall, " +
-             warnings_line(health) + (health.warnings > 0 ? " (summary.json: health)" : ""));
+  log_->line("done: " + std::to_string(steps_) + " steps, " + format("%.2f", wall_seconds() - start) +
+             " s wall, " + warnings_line(health) + (health.warnings > 0 ? " (summary.json: health)" : ""));
   check_outputs();
   return 0;
 }
@@ -373,8 +391,8 @@ void Simulation::check_health() {
 }
 
 void Simulation::record_failure(const std::string& message) {
-  // The failure's time and step are those of the step that failed (the fluid's clock has advanced to its end; the
-  // plate alone was going to step_end_); a failure before the first step is the static start's, at t = 0.
+  // The failure's time and step are those of the step that failed (the fluid's clock has advanced to its end;
+  // the plate alone was going to step_end_); a failure before the first step is the static start's, at t = 0.
   if (in_step_) {
     t_ = parts_.fluid ? parts_.fluid->time() : step_end_;
     ++steps_;

@@ -1,7 +1,8 @@
 // The coupled step with the plate-water exchange converged within the step (coupling.plate_wall_exchange:
-// implicit; docs/coupling.md, section 16). The explicit step hands the plate the water's load of the step's start
-// (extrapolated) and the water the plate's motion of the step before: on a plate light against the water it moves
-// (the paper's rubber plate with the trapezoidal rule), that lag feeds energy into the plate-water motion. Here:
+// implicit; docs/coupling.md, section 16). The explicit step hands the plate the water's load of the step's
+// start (extrapolated) and the water the plate's motion of the step before: on a plate light against the
+// water it moves (the paper's rubber plate with the trapezoidal rule), that lag feeds energy into the
+// plate-water motion. Here:
 //
 //   forces at t_n with the plate at t_n (done by the last step, or now)      F_n, the water's rates
 //   save the water, the plate, its cables and the coupling
@@ -14,15 +15,15 @@
 //            else F_in = IQN-ILS(F_in, F_out), everything put back, again
 //   (a stalled iteration ends with its best iterate: ContactCoupling::converge_exchange)
 //
-// With the plate solved under F_n+1 the trapezoidal rule's step is the plate's own (its work the trapezoid of F_n
-// and F_n+1), and the water's continuity sees the plate's actual motion: the exchange adds no energy of its own.
-#include "halfeti/app/simulation.hpp"
+// With the plate solved under F_n+1 the trapezoidal rule's step is the plate's own (its work the trapezoid of
+// F_n and F_n+1), and the water's continuity sees the plate's actual motion: the exchange adds no energy of
+// its own.
+#include <sstream>
 
 #include "halfeti/app/run_health.hpp"
+#include "halfeti/app/simulation.hpp"
 #include "halfeti/core/collective.hpp"
 #include "halfeti/io/run_log.hpp"
-
-#include <sstream>
 
 namespace halfeti::app {
 
@@ -50,11 +51,13 @@ double Simulation::advance_coupled_implicit() {
     ScopedTimer timer(timers_, "exchange_save");
     f.rollback(*fluid_saved_);
     collective_outcome(comm_, 0, parts_.structure_rank, [&] {
-      const Eigen::VectorXd attempt = parts_.plate->displacement();  // the next attempt's first Newton iterate
+      const Eigen::VectorXd attempt =
+          parts_.plate->displacement();  // the next attempt's first Newton iterate
       parts_.plate->restore_state(plate_saved);
       parts_.plate->set_next_predictor(attempt);
       std::size_t used = 0;
-      for (auto& cable : parts_.cables) used += cable->restore_state(cables_saved.data() + used, cables_saved.size() - used);
+      for (auto& cable : parts_.cables)
+        used += cable->restore_state(cables_saved.data() + used, cables_saved.size() - used);
     });
     c.restore_state(coupling_saved);  // leaves the surface loads of the next iterate
   };
@@ -88,8 +91,8 @@ double Simulation::advance_coupled_implicit() {
     if (exchange_.unconverged == 0) {  // said once; the rest are counted
       std::ostringstream line;
       line.precision(9);
-      line << "warning: the plate-water exchange did not converge in the step to t = " << t + dt << " s: residual "
-           << verdict.residual << " after " << evaluations
+      line << "warning: the plate-water exchange did not converge in the step to t = " << t + dt
+           << " s: residual " << verdict.residual << " after " << evaluations
            << " evaluations (coupling.implicit; kept, counted in summary.json: exchange)";
       log_->line(line.str());
     }

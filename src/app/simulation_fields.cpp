@@ -1,6 +1,6 @@
-// The field series of a run (README "Outputs"): the water's particles, the plate's mesh with its stress, the cables
-// as curves with their tension, and the tank's outline, each an HDF5 file per output time with an XDMF series
-// ParaView opens. Everything is in the tank's frame (the frame the solver works in).
+// The field series of a run (README "Outputs"): the water's particles, the plate's mesh with its stress, the
+// cables as curves with their tension, and the tank's outline, each an HDF5 file per output time with an XDMF
+// series ParaView opens. Everything is in the tank's frame (the frame the solver works in).
 #include <cstdint>
 
 #include "halfeti/app/simulation.hpp"
@@ -40,8 +40,8 @@ void Simulation::write_fluid_fields(double t) {
   const std::vector<double> velocity = as_vectors(n, f.vx().data(), f.vy().data());
   fluid_fields_->write(t, n, f.x().data(), f.y().data(),
                        {io::Field::vector("velocity", "m/s", velocity.data()),
-                        io::Field::scalar("rho", "kg/m^3", f.rho().data()), io::Field::scalar("p", "Pa", p.data()),
-                        io::Field::ids("gid", f.gid().data())});
+                        io::Field::scalar("rho", "kg/m^3", f.rho().data()),
+                        io::Field::scalar("p", "Pa", p.data()), io::Field::ids("gid", f.gid().data())});
 }
 
 void Simulation::write_plate_fields(double t) {
@@ -73,13 +73,14 @@ void Simulation::write_plate_fields(double t) {
     }
   }
   io::CellBlock block{"Quadrilateral", 4, cells.data(), cells.size() / 4};
-  plate_fields_->write(t, x.size(), x.data(), y.data(),
-                       {io::Field::vector("displacement", "m", displacement.data()),
-                        io::Field::vector("velocity", "m/s", velocity.data()),
-                        io::Field::scalar("von_mises", "Pa", cell_von_mises.data(), io::Center::kCell),
-                        io::Field::scalar("strain_energy_density", "J/m^3", cell_energy.data(), io::Center::kCell),
-                        io::Field::ids("element", element.data(), io::Center::kCell)},
-                       &block);
+  plate_fields_->write(
+      t, x.size(), x.data(), y.data(),
+      {io::Field::vector("displacement", "m", displacement.data()),
+       io::Field::vector("velocity", "m/s", velocity.data()),
+       io::Field::scalar("von_mises", "Pa", cell_von_mises.data(), io::Center::kCell),
+       io::Field::scalar("strain_energy_density", "J/m^3", cell_energy.data(), io::Center::kCell),
+       io::Field::ids("element", element.data(), io::Center::kCell)},
+      &block);
 }
 
 void Simulation::write_cable_fields(double t) {
@@ -101,15 +102,18 @@ void Simulation::write_cable_fields(double t) {
         force.push_back(cable::tension_per_cable(set, curve[k].tension));  // one real cable's, as the probes
         stress.push_back(cable::tension_stress(set, curve[k].tension));
         index.push_back(static_cast<std::int64_t>(i));
-        if (k > 0) cells.insert(cells.end(), {first + static_cast<std::int64_t>(k) - 1, first + static_cast<std::int64_t>(k)});
+        if (k > 0)
+          cells.insert(cells.end(),
+                       {first + static_cast<std::int64_t>(k) - 1, first + static_cast<std::int64_t>(k)});
       }
     }
   }
   io::CellBlock block{"Polyline", 2, cells.data(), cells.size() / 2};
-  cable_fields_->write(t, x.size(), x.data(), y.data(),
-                       {io::Field::scalar("tension", "N", force.data()), io::Field::scalar("stress", "Pa", stress.data()),
-                        io::Field::ids("cable", index.data())},
-                       &block);
+  cable_fields_->write(
+      t, x.size(), x.data(), y.data(),
+      {io::Field::scalar("tension", "N", force.data()), io::Field::scalar("stress", "Pa", stress.data()),
+       io::Field::ids("cable", index.data())},
+      &block);
 }
 
 void Simulation::write_tank_outline() {

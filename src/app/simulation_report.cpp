@@ -1,6 +1,6 @@
-// What a run tells: its start-up lines (log.txt), the progress line, the coupling trace (--trace coupling), and
-// summary.json, the run's status, provenance, size, cost, timers, mass balance and health, written by rank 0
-// (DESIGN.md's output contract; README "Outputs").
+// What a run tells: its start-up lines (log.txt), the progress line, the coupling trace (--trace coupling),
+// and summary.json, the run's status, provenance, size, cost, timers, mass balance and health, written by
+// rank 0 (DESIGN.md's output contract; README "Outputs").
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -44,7 +44,8 @@ void Simulation::announce() {
     if (c.initial_stress > 0) os << " (from the initial stress " << c.initial_stress << " Pa)";
     log_->line(os.str());
   }
-  if (!parts_.fluid && !parts_.structure_setup) log_->line("no parts: the clock advances by the probe interval");
+  if (!parts_.fluid && !parts_.structure_setup)
+    log_->line("no parts: the clock advances by the probe interval");
 }
 
 std::string Simulation::progress_line(double dt, double wall) const {
@@ -56,8 +57,8 @@ std::string Simulation::progress_line(double dt, double wall) const {
   return buf;
 }
 
-// One line per coupled step on stderr (rank 0: the contact and plate-wall forces on the plate's side; every rank:
-// its fastest particle), for the noise figures of docs/coupling.md.
+// One line per coupled step on stderr (rank 0: the contact and plate-wall forces on the plate's side; every
+// rank: its fastest particle), for the noise figures of docs/coupling.md.
 void Simulation::trace_coupled_step() const {
   const sph::Fluid& f = *parts_.fluid;
   const auto& r = parts_.coupling->last_step();
@@ -72,10 +73,11 @@ void Simulation::trace_coupled_step() const {
   }
   std::fprintf(stderr, "coupling_trace_fastest t=%.6f u=%.3g at (%.5f, %.5f)\n", f.time(), best, bx, by);
   if (rank_ == 0)
-    std::fprintf(stderr,
-                 "coupling_trace t=%.6f inv=%d rel=%d L=%.3g umax=%.3g Fc=(%.4g,%.4g) maxF=%.3g Fw=(%.4g,%.4g)\n",
-                 f.time(), r.invaders, r.released, r.layer, r.u_max, r.force_x, r.force_y, r.max_force,
-                 parts_.coupling->fluid_load_x(), parts_.coupling->fluid_load_y());
+    std::fprintf(
+        stderr,
+        "coupling_trace t=%.6f inv=%d rel=%d L=%.3g umax=%.3g Fc=(%.4g,%.4g) maxF=%.3g Fw=(%.4g,%.4g)\n",
+        f.time(), r.invaders, r.released, r.layer, r.u_max, r.force_x, r.force_y, r.max_force,
+        parts_.coupling->fluid_load_x(), parts_.coupling->fluid_load_y());
 }
 
 void Simulation::write_summary(const std::string& status, double wall, double loop_wall) {
@@ -96,8 +98,8 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
     timers.merge(plate);
   }
   const long long dofs = parts_.plate ? parts_.plate->dof_count() : 0;  // written by rank 0, a structure rank
-  // Cost: CPU seconds (user + system) summed over the ranks, and the peak resident memory of the busiest rank and
-  // of all ranks together (getrusage: this process since it started).
+  // Cost: CPU seconds (user + system) summed over the ranks, and the peak resident memory of the busiest rank
+  // and of all ranks together (getrusage: this process since it started).
   struct rusage usage {};
   getrusage(RUSAGE_SELF, &usage);
   const double cpu_here = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
@@ -106,9 +108,9 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
   double sums[2] = {cpu_here, rss_here}, rss_max = rss_here;
   MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, comm_);
   MPI_Allreduce(MPI_IN_PLACE, &rss_max, 1, MPI_DOUBLE, MPI_MAX, comm_);
-  // Per rank: the water's messages and bytes sent (halo and migration), seconds waiting for them, its own work
-  // (the fluid's phases that no other rank waits in: pairs, forces, density gradient, integration) and its peak
-  // memory, gathered on rank 0.
+  // Per rank: the water's messages and bytes sent (halo and migration), seconds waiting for them, its own
+  // work (the fluid's phases that no other rank waits in: pairs, forces, density gradient, integration) and
+  // its peak memory, gathered on rank 0.
   constexpr int kPerRank = 5;
   double mine[kPerRank] = {0, 0, 0, 0, rss_here};
   if (parts_.fluid) {
@@ -117,7 +119,8 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
     mine[0] = static_cast<double>(tr.messages);
     mine[1] = static_cast<double>(tr.bytes);
     mine[2] = tr.wait_seconds;
-    mine[3] = ft.seconds("neighbours") + ft.seconds("forces") + ft.seconds("density_gradient") + ft.seconds("integrate");
+    mine[3] = ft.seconds("neighbours") + ft.seconds("forces") + ft.seconds("density_gradient") +
+              ft.seconds("integrate");
   }
   std::vector<double> per_rank(rank_ == 0 ? kPerRank * size_ : 0);
   MPI_Gather(mine, kPerRank, MPI_DOUBLE, per_rank.data(), kPerRank, MPI_DOUBLE, 0, comm_);
@@ -128,7 +131,8 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
     j.set("exit_status", status);
     j.set("scene", root.section("scene").string("name"));
     j.set("scene_file", scene_.file);
-    if (root.section("scene").has("description")) j.set("description", root.section("scene").string("description"));
+    if (root.section("scene").has("description"))
+      j.set("description", root.section("scene").string("description"));
     // Provenance: what ran, where, when and from what.
     io::Json prov = io::Json::object();
     prov.set("version", kVersion).set("commit", kGitCommit).set("command_line", options_.command_line);
@@ -150,9 +154,10 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
     j.set("loop_wall_time", loop_wall);
     j.set("earlier_wall_time", earlier_wall_);  // of the runs it continues
     const long long steps_here = steps_ - steps_at_start_;
-    j.set("ns_per_particle_step", particles > 0 && steps_here > 0
-                                      ? io::Json(1e9 * loop_wall / (static_cast<double>(particles) * steps_here))
-                                      : io::Json());
+    j.set("ns_per_particle_step",
+          particles > 0 && steps_here > 0
+              ? io::Json(1e9 * loop_wall / (static_cast<double>(particles) * steps_here))
+              : io::Json());
     io::Json cost = io::Json::object();
     cost.set("cpu_seconds", sums[0]).set("cpu_seconds_per_rank", sums[0] / size_);
     cost.set("peak_memory_bytes_busiest_rank", rss_max).set("peak_memory_bytes_all_ranks", sums[1]);
@@ -176,16 +181,20 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
         work_max = std::max(work_max, v[3]);
         work_sum += v[3];
       }
-      comm.set("messages_sent_per_step", msgs).set("bytes_sent_per_step", bytes).set("mpi_wait_seconds", wait);
+      comm.set("messages_sent_per_step", msgs)
+          .set("bytes_sent_per_step", bytes)
+          .set("mpi_wait_seconds", wait);
       comm.set("compute_seconds", work).set("peak_memory_bytes", memory);
       comm.set("load_imbalance", work_sum > 0.0 ? io::Json(work_max * size_ / work_sum) : io::Json());
       j.set("ranks_detail", comm);
     }
-    if (parts_.coupling && parts_.coupling->parameters().implicit_exchange()) {  // this run's (since a restart)
+    if (parts_.coupling &&
+        parts_.coupling->parameters().implicit_exchange()) {  // this run's (since a restart)
       io::Json ex = io::Json::object();
       const auto& e = exchange_;
       ex.set("steps", e.steps).set("evaluations", e.evaluations);
-      ex.set("evaluations_per_step", e.steps > 0 ? io::Json(double(e.evaluations) / double(e.steps)) : io::Json());
+      ex.set("evaluations_per_step",
+             e.steps > 0 ? io::Json(double(e.evaluations) / double(e.steps)) : io::Json());
       ex.set("most_in_a_step", e.most).set("unconverged_steps", e.unconverged);
       ex.set("worst_unconverged_residual", e.unconverged > 0 ? io::Json(e.worst_residual) : io::Json());
       // The steps kept unconverged by their residual: below 1e-3, 1e-3 to 1e-2, 1e-2 to 0.1, 0.1 and above (a
@@ -196,12 +205,15 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
       j.set("exchange", ex);
     }
     j.set("max_density_variation", parts_.fluid ? io::Json(max_density_variation_) : io::Json());
-    // Water thrown over the tank's open top leaves the run (a "spilled" health event); the error counts it in.
+    // Water thrown over the tank's open top leaves the run (a "spilled" health event); the error counts it
+    // in.
     const double spilled = parts_.fluid ? parts_.fluid->spilled_mass() : 0.0;
-    j.set("mass_error",
-          parts_.fluid && initial_mass_ > 0 ? io::Json((mass + spilled - initial_mass_) / initial_mass_) : io::Json());
+    j.set("mass_error", parts_.fluid && initial_mass_ > 0
+                            ? io::Json((mass + spilled - initial_mass_) / initial_mass_)
+                            : io::Json());
     j.set("spilled_mass", parts_.fluid ? io::Json(spilled) : io::Json());
-    // Health: each kind's episodes, the first (its message) and the worst value with where and when; the list.
+    // Health: each kind's episodes, the first (its message) and the worst value with where and when; the
+    // list.
     const HealthLog log = health_events();
     const HealthTally health = tally(log);
     const auto number = [](double v) { return std::isfinite(v) ? io::Json(v) : io::Json(); };
@@ -209,8 +221,12 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
     for (const auto& [kind, k] : health.kinds) {
       io::Json kj = io::Json::object();
       kj.set("episodes", k.episodes).set("fatal", k.fatal);
-      kj.set("first_time", k.first->time).set("first_step", k.first->step).set("first_message", k.first->message);
-      kj.set("worst", number(k.worst->worst)).set("worst_episode", k.worst->message).set("worst_time", number(k.worst->worst_time));
+      kj.set("first_time", k.first->time)
+          .set("first_step", k.first->step)
+          .set("first_message", k.first->message);
+      kj.set("worst", number(k.worst->worst))
+          .set("worst_episode", k.worst->message)
+          .set("worst_time", number(k.worst->worst_time));
       kj.set("worst_step", std::isfinite(k.worst->worst_time) ? io::Json(k.worst->worst_step) : io::Json());
       io::Json place = io::Json::array();
       place.push(number(k.worst->worst_x)).push(number(k.worst->worst_y));
@@ -223,7 +239,11 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
     io::Json events = io::Json::array();
     for (const auto& e : log) {
       io::Json ev = io::Json::object();
-      ev.set("time", e.time).set("step", e.step).set("kind", e.kind).set("fatal", e.fatal).set("message", e.message);
+      ev.set("time", e.time)
+          .set("step", e.step)
+          .set("kind", e.kind)
+          .set("fatal", e.fatal)
+          .set("message", e.message);
       ev.set("worst", number(e.worst));
       events.push(ev);
     }

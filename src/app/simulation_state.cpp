@@ -59,7 +59,8 @@ void Simulation::write_checkpoint(const std::string& label, bool between_steps) 
 void Simulation::restore(io::Checkpoint c) {
   const auto block = [&](const char* name) -> const std::vector<double>& {
     const auto it = c.blocks.find(name);
-    if (it == c.blocks.end()) HALFETI_USER_ERROR("restart: '" << restart_path_ << "' holds no " << name << " state");
+    if (it == c.blocks.end())
+      HALFETI_USER_ERROR("restart: '" << restart_path_ << "' holds no " << name << " state");
     return it->second;
   };
   const auto text = [&](const char* name) {
@@ -79,13 +80,15 @@ void Simulation::restore(io::Checkpoint c) {
   steps_at_start_ = steps_;
   if (parts_.fluid) {
     const auto& f = block("fluid");
-    if (f.size() != 4) HALFETI_USER_ERROR("restart: the fluid state of '" << restart_path_ << "' is malformed");
-    // The sound speed may be sized from the peak ground acceleration up to end_time (eq. 10): a longer run must
-    // not change it.
+    if (f.size() != 4)
+      HALFETI_USER_ERROR("restart: the fluid state of '" << restart_path_ << "' is malformed");
+    // The sound speed may be sized from the peak ground acceleration up to end_time (eq. 10): a longer run
+    // must not change it.
     if (f[3] != parts_.fluid->sound_speed())
-      HALFETI_USER_ERROR("restart: the sound speed is " << parts_.fluid->sound_speed() << " m/s, the checkpoint's "
-                                                        << f[3] << " m/s (sized from the excitation up to end_time: "
-                                                                   "set fluid.sound_speed to continue)");
+      HALFETI_USER_ERROR("restart: the sound speed is " << parts_.fluid->sound_speed()
+                                                        << " m/s, the checkpoint's " << f[3]
+                                                        << " m/s (sized from the excitation up to end_time: "
+                                                           "set fluid.sound_speed to continue)");
     sph::Fluid::State st;
     st.particles = std::move(c.particles);
     st.time = f[0];
@@ -103,9 +106,11 @@ void Simulation::restore(io::Checkpoint c) {
       parts_.plate->restore_state(block("plate"));  // before the cables: its pattern pass evaluates them
       const auto& cables = block("cables");
       std::size_t used = 0;
-      for (auto& cable : parts_.cables) used += cable->restore_state(cables.data() + used, cables.size() - used);
+      for (auto& cable : parts_.cables)
+        used += cable->restore_state(cables.data() + used, cables.size() - used);
       if (used != cables.size())
-        HALFETI_USER_ERROR("restart: '" << restart_path_ << "' holds the state of more cables than the scene has");
+        HALFETI_USER_ERROR("restart: '" << restart_path_
+                                        << "' holds the state of more cables than the scene has");
     });
   }
   if (parts_.coupling) {

@@ -70,7 +70,8 @@ void CableElement::save_state(std::vector<double>& state) const {
 
 std::size_t CableElement::restore_state(const double* state, std::size_t available) {
   if (available < kStateSize)
-    HALFETI_USER_ERROR("restart: a cable's state needs " << kStateSize << " values, " << available << " left");
+    HALFETI_USER_ERROR("restart: a cable's state needs " << kStateSize << " values, " << available
+                                                         << " left");
   double load = 0.0, warm = 0.0;
   const double* p = state;
   visit_state(last_, load, warm, [&](double* q, int n) {

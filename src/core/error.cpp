@@ -1,4 +1,5 @@
 #include "halfeti/core/error.hpp"
+
 #include "halfeti/core/collective.hpp"
 
 namespace halfeti {
@@ -20,17 +21,22 @@ int exit_status(ErrorKind kind) {
 namespace detail {
 void raise_shared(int kind, const std::string& message) {
   switch (static_cast<ErrorKind>(kind)) {
-    case ErrorKind::kUser: throw UserError(message);
-    case ErrorKind::kNumerical: throw NumericalError(message);
-    case ErrorKind::kIo: throw IoError(message);
-    case ErrorKind::kInternal: break;
+    case ErrorKind::kUser:
+      throw UserError(message);
+    case ErrorKind::kNumerical:
+      throw NumericalError(message);
+    case ErrorKind::kIo:
+      throw IoError(message);
+    case ErrorKind::kInternal:
+      break;
   }
   throw InternalError(message);
 }
 
 void raise_internal(const char* cond, const std::string& msg, const char* func, const char* file, int line) {
   std::ostringstream os;
-  os << "internal check failed: " << msg << " [" << cond << " in " << func << " at " << file << ":" << line << "]";
+  os << "internal check failed: " << msg << " [" << cond << " in " << func << " at " << file << ":" << line
+     << "]";
   throw InternalError(os.str());
 }
 }  // namespace detail

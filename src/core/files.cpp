@@ -5,7 +5,9 @@
 namespace halfeti {
 
 namespace {
-bool stat_of(const std::string& path, struct stat& st) { return ::stat(path.c_str(), &st) == 0; }
+bool stat_of(const std::string& path, struct stat& st) {
+  return ::stat(path.c_str(), &st) == 0;
+}
 }  // namespace
 
 bool path_exists(const std::string& path) {

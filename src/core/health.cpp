@@ -89,7 +89,8 @@ HealthLog decode_health_log(const std::string& text) {
     std::size_t start = 0;
     for (int k = 0; k < kFields - 1; ++k) {
       const std::size_t tab = line.find('\t', start);
-      if (tab == std::string::npos) HALFETI_USER_ERROR("restart: a health-log line of the checkpoint is malformed");
+      if (tab == std::string::npos)
+        HALFETI_USER_ERROR("restart: a health-log line of the checkpoint is malformed");
       f.push_back(line.substr(start, tab - start));
       start = tab + 1;
     }

@@ -7,7 +7,8 @@ namespace halfeti::scene {
 
 namespace {
 
-void write_section(std::ostringstream& os, const Schema& schema, const std::string& path, const std::string& note) {
+void write_section(std::ostringstream& os, const Schema& schema, const std::string& path,
+                   const std::string& note) {
   os << "\n### `" << (path.empty() ? "(top level)" : path) << "`" << note << "\n\n";
   if (!schema.doc().empty()) os << schema.doc() << "\n\n";
   os << "| key | expects | default | meaning |\n|---|---|---|---|\n";

@@ -12,7 +12,9 @@ namespace halfeti::scene {
 
 namespace {
 
-std::string join_path(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+std::string join_path(const std::string& path, const std::string& key) {
+  return path.empty() ? key : path + "." + key;
+}
 
 std::string scalar_text(const YAML::Node& n) {
   if (!n.IsDefined() || n.IsNull()) return "nothing";
@@ -43,12 +45,13 @@ class Resolver {
     for (std::size_t i = 0; i < shown; ++i) text += (i ? "\n" : "") + errors_[i].text;
     if (errors_.size() > shown)
       text += "\n" + (origin_.file.empty() ? std::string("<scene>") : origin_.file) + ": " +
-              std::to_string(errors_.size() - shown) + " more errors not shown (" + std::to_string(errors_.size()) +
-              " in all)";
+              std::to_string(errors_.size() - shown) + " more errors not shown (" +
+              std::to_string(errors_.size()) + " in all)";
     throw UserError(text);
   }
 
-  YAML::Node section(const YAML::Node& raw, const Schema& schema, const std::string& path, const YAML::Node& at) {
+  YAML::Node section(const YAML::Node& raw, const Schema& schema, const std::string& path,
+                     const YAML::Node& at) {
     if (raw.IsDefined() && !raw.IsNull() && !raw.IsMap())
       fail(raw, path, "expected a section (key: value lines), found " + scalar_text(raw));
     const YAML::Node in = (raw.IsDefined() && raw.IsMap()) ? raw : YAML::Node(YAML::NodeType::Map);
@@ -79,7 +82,8 @@ class Resolver {
     std::vector<std::string> meant;  // keys a near-miss spelling stood for: not reported missing as well
     for (auto it = in.begin(); it != in.end(); ++it) {
       const std::string name = it->first.Scalar();
-      const bool known = std::any_of(keys.begin(), keys.end(), [&](const Key* k) { return k->name() == name; });
+      const bool known =
+          std::any_of(keys.begin(), keys.end(), [&](const Key* k) { return k->name() == name; });
       if (known) continue;
       std::vector<std::string> names;
       for (const Key* k : keys) names.push_back(k->name());
@@ -98,7 +102,8 @@ class Resolver {
 
     YAML::Node out(YAML::NodeType::Map);
     for (const Key* k : keys) {
-      if (std::find(meant.begin(), meant.end(), k->name()) != meant.end() && !in[k->name()].IsDefined()) continue;
+      if (std::find(meant.begin(), meant.end(), k->name()) != meant.end() && !in[k->name()].IsDefined())
+        continue;
       try {
         resolve_key(in, *k, path, located, out);
       } catch (const Recorded&) {  // recorded; on to the next key
@@ -173,8 +178,9 @@ class Resolver {
       case ValueKind::kRealList: {
         if (!v.IsSequence()) fail(v, path, expected());
         if (static_cast<int>(v.size()) < key.min_items_count())
-          fail(v, path, "expected at least " + std::to_string(key.min_items_count()) + " numbers, found " +
-                            std::to_string(v.size()));
+          fail(v, path,
+               "expected at least " + std::to_string(key.min_items_count()) + " numbers, found " +
+                   std::to_string(v.size()));
         YAML::Node out(YAML::NodeType::Sequence);
         out.SetStyle(YAML::EmitterStyle::Flow);
         for (size_t i = 0; i < v.size(); ++i) {
@@ -189,8 +195,9 @@ class Resolver {
       case ValueKind::kList: {
         if (!v.IsSequence()) fail(v, path, expected());
         if (static_cast<int>(v.size()) < key.min_items_count())
-          fail(v, path, "expected at least " + std::to_string(key.min_items_count()) + " items, found " +
-                            std::to_string(v.size()));
+          fail(v, path,
+               "expected at least " + std::to_string(key.min_items_count()) + " items, found " +
+                   std::to_string(v.size()));
         YAML::Node out(YAML::NodeType::Sequence);
         bool complete = true;
         for (size_t i = 0; i < v.size(); ++i) {
@@ -236,7 +243,8 @@ class Resolver {
     }
     std::ostringstream os;
     os << (origin_.file.empty() ? "<scene>" : origin_.file);
-    if (node.IsDefined() && !node.Mark().is_null()) os << ":" << node.Mark().line + 1 << ":" << node.Mark().column + 1;
+    if (node.IsDefined() && !node.Mark().is_null())
+      os << ":" << node.Mark().line + 1 << ":" << node.Mark().column + 1;
     return os.str();
   }
 
@@ -297,7 +305,8 @@ void apply_override(YAML::Node& raw, const std::string& assignment, Origin& orig
   std::vector<std::string> parts;
   std::stringstream ss(path);
   for (std::string p; std::getline(ss, p, '.');) {
-    if (p.empty()) HALFETI_USER_ERROR("--set " << assignment << ": empty component in key path '" << path << "'");
+    if (p.empty())
+      HALFETI_USER_ERROR("--set " << assignment << ": empty component in key path '" << path << "'");
     parts.push_back(p);
   }
   if (!raw.IsDefined() || raw.IsNull()) raw = YAML::Node(YAML::NodeType::Map);
@@ -339,7 +348,8 @@ void apply_override(YAML::Node& raw, const std::string& assignment, Origin& orig
     } catch (...) {
       HALFETI_USER_ERROR("--set " << assignment << ": '" << path << "' indexes a list with a non-number");
     }
-    if (idx >= last.size()) HALFETI_USER_ERROR("--set " << assignment << ": list index " << idx << " out of range");
+    if (idx >= last.size())
+      HALFETI_USER_ERROR("--set " << assignment << ": list index " << idx << " out of range");
     last[idx] = value;
   } else {
     if (last.IsScalar())

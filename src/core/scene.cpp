@@ -1,8 +1,6 @@
 #include "halfeti/core/scene.hpp"
 
-
 #include <algorithm>
-
 #include <fstream>
 #include <sstream>
 
@@ -22,10 +20,18 @@ bool Node::has(const std::string& key) const {
   return n.IsDefined() && !n.IsNull();
 }
 
-double Node::real(const std::string& key) const { return at(key).as<double>(); }
-long long Node::integer(const std::string& key) const { return at(key).as<long long>(); }
-bool Node::boolean(const std::string& key) const { return at(key).as<bool>(); }
-std::string Node::string(const std::string& key) const { return at(key).Scalar(); }
+double Node::real(const std::string& key) const {
+  return at(key).as<double>();
+}
+long long Node::integer(const std::string& key) const {
+  return at(key).as<long long>();
+}
+bool Node::boolean(const std::string& key) const {
+  return at(key).as<bool>();
+}
+std::string Node::string(const std::string& key) const {
+  return at(key).Scalar();
+}
 
 std::array<double, 2> Node::point(const std::string& key) const {
   const YAML::Node n = at(key);
@@ -39,7 +45,9 @@ std::vector<double> Node::reals(const std::string& key) const {
   return out;
 }
 
-Node Node::section(const std::string& key) const { return Node(at(key), key_path(key)); }
+Node Node::section(const std::string& key) const {
+  return Node(at(key), key_path(key));
+}
 
 std::vector<Node> Node::list(const std::string& key) const {
   std::vector<Node> out;
@@ -56,12 +64,13 @@ std::string Scene::resolved_text() const {
 }
 
 namespace {
-// yaml-cpp keeps every entry of a mapping that repeats a key (and its lookups find the first): a repeated key is
-// an error here, as PyYAML in the tools would silently keep the last.
+// yaml-cpp keeps every entry of a mapping that repeats a key (and its lookups find the first): a repeated key
+// is an error here, as PyYAML in the tools would silently keep the last.
 void find_duplicate_keys(const YAML::Node& n, const std::string& file, const std::string& path,
                          std::vector<std::string>& found) {
   if (n.IsSequence()) {
-    for (std::size_t i = 0; i < n.size(); ++i) find_duplicate_keys(n[i], file, path + "[" + std::to_string(i) + "]", found);
+    for (std::size_t i = 0; i < n.size(); ++i)
+      find_duplicate_keys(n[i], file, path + "[" + std::to_string(i) + "]", found);
     return;
   }
   if (!n.IsMap()) return;
@@ -94,10 +103,12 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::v
   try {
     raw = YAML::Load(text);
   } catch (const YAML::ParserException& e) {
-    HALFETI_USER_ERROR(file << ":" << e.mark.line + 1 << ":" << e.mark.column + 1 << ": not valid YAML: " << e.msg);
+    HALFETI_USER_ERROR(file << ":" << e.mark.line + 1 << ":" << e.mark.column + 1
+                            << ": not valid YAML: " << e.msg);
   }
   if (raw.IsDefined() && !raw.IsNull() && !raw.IsMap())
-    HALFETI_USER_ERROR(file << ": a scene is a YAML mapping of sections (scene:, fluid:, ...), found something else");
+    HALFETI_USER_ERROR(
+        file << ": a scene is a YAML mapping of sections (scene:, fluid:, ...), found something else");
   reject_duplicate_keys(raw, file);
   Origin origin{file, {}};
   Scene s;
@@ -105,7 +116,8 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::v
   try {
     for (const auto& o : overrides) apply_override(raw, o, origin);
     s.resolved = resolve(raw, schema, origin);
-  } catch (const YAML::Exception& e) {  // a shape the checks above did not foresee: still bad input, not a crash
+  } catch (
+      const YAML::Exception& e) {  // a shape the checks above did not foresee: still bad input, not a crash
     HALFETI_USER_ERROR(file << ": the scene's structure is not what its keys expect (" << e.msg << ")");
   }
   return s;
@@ -115,7 +127,8 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
                  MPI_Comm comm) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
-  // Rank 0 sends either "ok" + the resolved text, or "error" + the message; the others rebuild the same outcome.
+  // Rank 0 sends either "ok" + the resolved text, or "error" + the message; the others rebuild the same
+  // outcome.
   int status = 0;
   std::string payload;
   if (rank == 0) {

@@ -23,9 +23,15 @@ Key Key::real(std::string name, std::string doc, std::string unit) {
   k.unit_ = std::move(unit);
   return k;
 }
-Key Key::integer(std::string name, std::string doc) { return Key(std::move(name), std::move(doc), ValueKind::kInteger); }
-Key Key::boolean(std::string name, std::string doc) { return Key(std::move(name), std::move(doc), ValueKind::kBool); }
-Key Key::string(std::string name, std::string doc) { return Key(std::move(name), std::move(doc), ValueKind::kString); }
+Key Key::integer(std::string name, std::string doc) {
+  return Key(std::move(name), std::move(doc), ValueKind::kInteger);
+}
+Key Key::boolean(std::string name, std::string doc) {
+  return Key(std::move(name), std::move(doc), ValueKind::kBool);
+}
+Key Key::string(std::string name, std::string doc) {
+  return Key(std::move(name), std::move(doc), ValueKind::kString);
+}
 Key Key::choice(std::string name, std::string doc, std::vector<std::string> choices) {
   Key k(std::move(name), std::move(doc), ValueKind::kChoice);
   k.choices_ = std::move(choices);
@@ -66,7 +72,8 @@ Key& Key::implied_by(std::vector<std::string> siblings) {
 }
 
 Key& Key::def(double v) {
-  // The shortest text that reads back to the same double, so resolved scenes show 0.005, not 0.0050000000000000001.
+  // The shortest text that reads back to the same double, so resolved scenes show 0.005, not
+  // 0.0050000000000000001.
   char buf[40];
   for (int precision = 6; precision <= 17; ++precision) {
     std::snprintf(buf, sizeof buf, "%.*g", precision, v);
@@ -83,7 +90,9 @@ Key& Key::def(bool v) {
   default_ = v ? "true" : "false";
   return *this;
 }
-Key& Key::def(const char* v) { return def(std::string(v)); }
+Key& Key::def(const char* v) {
+  return def(std::string(v));
+}
 Key& Key::def(const std::string& v) {
   default_ = v;
   return *this;
@@ -96,8 +105,12 @@ Key& Key::def_yaml(const std::string& yaml_text) {
   default_ = yaml_text;
   return *this;
 }
-Key& Key::positive() { return above(0.0); }
-Key& Key::non_negative() { return at_least(0.0); }
+Key& Key::positive() {
+  return above(0.0);
+}
+Key& Key::non_negative() {
+  return at_least(0.0);
+}
 Key& Key::at_least(double lo) {
   lo_ = lo;
   lo_open_ = false;
@@ -208,15 +221,18 @@ const Key* Schema::find(const std::string& name) const {
 }
 
 std::string closest_name(const std::string& word, const std::vector<std::string>& candidates) {
-  // Edit distance with adjacent transpositions (optimal string alignment): 'heigth' is one edit from 'height'.
+  // Edit distance with adjacent transpositions (optimal string alignment): 'heigth' is one edit from
+  // 'height'.
   auto distance = [](const std::string& a, const std::string& b) {
     std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
     for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
     for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
     for (size_t i = 1; i <= a.size(); ++i)
       for (size_t j = 1; j <= b.size(); ++j) {
-        d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
-        if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+        d[i][j] =
+            std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+        if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+          d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
       }
     return d[a.size()][b.size()];
   };

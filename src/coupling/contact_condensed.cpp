@@ -47,7 +47,8 @@ std::pair<double, double> ContactSystem::assemble_condensed(const std::vector<Co
     b.bottomLeftCorner(r, 2) = -lc.terms.gradient.topLeftCorner(r, 2);
     c.topRows<2>() = h.block<2, 4>(0, 2);
     c.bottomRows(r) = -lc.terms.gradient.block(0, 2, r, 4);
-    bz.head<2>() = lc.rhs.head<2>();  // (fixed-size halves: the comma initialiser's dynamic blocks make GCC 12 warn)
+    bz.head<2>() =
+        lc.rhs.head<2>();  // (fixed-size halves: the comma initialiser's dynamic blocks make GCC 12 warn)
     bz.tail(r) = lc.terms.value.head(r);
     particle2 += lc.rhs.head<2>().squaredNorm();
     gap = std::max(gap, lc.terms.value.head(r).cwiseAbs().maxCoeff());

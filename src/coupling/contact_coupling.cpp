@@ -22,13 +22,16 @@ void validate(const CouplingParameters& p) {
     HALFETI_USER_ERROR("coupling.inside_tolerance = " << p.inside_tolerance << " m must be > 0");
   if (p.implicit_exchange()) {
     if (!p.plate_wall)
-      HALFETI_USER_ERROR("coupling.plate_wall_exchange: implicit converges the plate-wall exchange; it needs "
-                         "coupling.plate_wall: true");
+      HALFETI_USER_ERROR(
+          "coupling.plate_wall_exchange: implicit converges the plate-wall exchange; it needs "
+          "coupling.plate_wall: true");
     if (p.added_mass_kind != CouplingParameters::AddedMass::kNone)
-      HALFETI_USER_ERROR("coupling.added_mass: with plate_wall_exchange: implicit the water's response is converged "
-                         "within the step, not modelled; set coupling.added_mass: none");
+      HALFETI_USER_ERROR(
+          "coupling.added_mass: with plate_wall_exchange: implicit the water's response is converged "
+          "within the step, not modelled; set coupling.added_mass: none");
     if (p.implicit.max_iterations < 1)
-      HALFETI_USER_ERROR("coupling.implicit.max_iterations = " << p.implicit.max_iterations << " must be >= 1");
+      HALFETI_USER_ERROR("coupling.implicit.max_iterations = " << p.implicit.max_iterations
+                                                               << " must be >= 1");
     if (!(p.implicit.tolerance > 0.0 && p.implicit.tolerance < 1.0))
       HALFETI_USER_ERROR("coupling.implicit.tolerance = " << p.implicit.tolerance << " must be in (0, 1)");
     if (!(p.implicit.accelerator.relaxation > 0.0 && p.implicit.accelerator.relaxation <= 1.0))
@@ -41,8 +44,8 @@ void SurfacePointLoad::start_step(const Eigen::Vector2d& load, const Eigen::Vect
                                   const Eigen::Matrix2d& added_mass, Guess guess) {
   added_mass_ = added_mass;
   rest_ = has_previous_ ? Eigen::Vector2d(2.0 * place - place_) : place;
-  // The explicit exchange's trapezoidal step wants the load at mid-step; the water's is from the step's start. The
-  // converged exchange's starts from the load extrapolated to the step's end.
+  // The explicit exchange's trapezoidal step wants the load at mid-step; the water's is from the step's
+  // start. The converged exchange's starts from the load extrapolated to the step's end.
   force_ = load;
   if (has_previous_ && guess == Guess::kMidStep) force_ = 1.5 * load - 0.5 * previous_;
   if (has_previous_ && guess == Guess::kStepEnd) force_ = 2.0 * load - previous_;
@@ -52,7 +55,8 @@ void SurfacePointLoad::start_step(const Eigen::Vector2d& load, const Eigen::Vect
 }
 
 void SurfacePointLoad::save_state(std::vector<double>& state) const {
-  state.insert(state.end(), {previous_.x(), previous_.y(), place_.x(), place_.y(), has_previous_ ? 1.0 : 0.0});
+  state.insert(state.end(),
+               {previous_.x(), previous_.y(), place_.x(), place_.y(), has_previous_ ? 1.0 : 0.0});
 }
 
 const double* SurfacePointLoad::restore_state(const double* state) {
@@ -71,11 +75,11 @@ ContactCoupling::ContactCoupling(MPI_Comm world, structure::PlateSolver* solver,
   HALFETI_CHECK((rank_ == root_) == (solver_ != nullptr),
                 "the plate solver must be given on the root rank only");
   if (solver_ != nullptr)
-    system_ =
-        std::make_unique<ContactSystem>(*solver_, params_.constraint, params_.options_prefix, params_.solver,
-                                        params_.mass_participation);
+    system_ = std::make_unique<ContactSystem>(*solver_, params_.constraint, params_.options_prefix,
+                                              params_.solver, params_.mass_participation);
   broadcast_surface();
-  // The plate's thickness (its base corners are the surface's ends): how deep inside the plate the search looks.
+  // The plate's thickness (its base corners are the surface's ends): how deep inside the plate the search
+  // looks.
   if (surface_.points.size() >= 2) thickness_ = (surface_.points.front() - surface_.points.back()).norm();
   if (solver_ != nullptr) {
     for (int node : surface_.nodes) {
@@ -87,7 +91,8 @@ ContactCoupling::ContactCoupling(MPI_Comm world, structure::PlateSolver* solver,
       corners_[0] = corners.first;
       corners_[1] = corners.second;
       const Eigen::Vector2d d = surface_.points[1] - surface_.points[0];
-      first_face_ = d.y() > 0.0 ? PlateLoadBreakdown::kRight : PlateLoadBreakdown::kLeft;  // outward (t_y, -t_x)
+      first_face_ =
+          d.y() > 0.0 ? PlateLoadBreakdown::kRight : PlateLoadBreakdown::kLeft;  // outward (t_y, -t_x)
       second_face_ = d.y() > 0.0 ? PlateLoadBreakdown::kLeft : PlateLoadBreakdown::kRight;
     }
   }
@@ -189,8 +194,8 @@ void ContactCoupling::set_fluid_loads(const std::vector<sph::PlateWallLoad>& loc
                                                       : Guess::kStart;
     for (std::size_t k = 0; k < loads_.size(); ++k) {
       auto& l = *loads_[k];
-      // The interface added mass on this point (sections 13, 15): along its normal, on half of each neighbouring
-      // segment's length; none on the clamped base corners.
+      // The interface added mass on this point (sections 13, 15): along its normal, on half of each
+      // neighbouring segment's length; none on the clamped base corners.
       Eigen::Matrix2d added_mass = Eigen::Matrix2d::Zero();
       if (k > 0 && k < last && mass_per_area > 0.0) {
         const double length = 0.5 * ((pts[k] - pts[k - 1]).norm() + (pts[k + 1] - pts[k]).norm());
@@ -259,10 +264,10 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
   for (auto& l : loads_) l->set_time_step(dt);  // section 13
   for (auto& face : breakdown_.contact) face[0] = face[1] = 0.0;
   const Eigen::VectorXd u_before = solver_->displacement();
-  // The water's work on the plate over the step, part by part: the trapezoid of each part's nodal force at the
-  // step's start and end times the node's displacement over it, the discrete work of the trapezoidal rule (with
-  // gamma = 1/2 the plate's energy then changes by exactly this; with gamma > 1/2 the difference is the Newmark
-  // dissipation).
+  // The water's work on the plate over the step, part by part: the trapezoid of each part's nodal force at
+  // the step's start and end times the node's displacement over it, the discrete work of the trapezoidal rule
+  // (with gamma = 1/2 the plate's energy then changes by exactly this; with gamma > 1/2 the difference is the
+  // Newmark dissipation).
   auto add_work = [&] {
     double* work[3] = {&breakdown_.work_wall, &breakdown_.work_added_mass, &breakdown_.work_contact};
     for (int part = 0; part < 3; ++part) {
@@ -270,14 +275,16 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
       auto& before = previous_force_[part];
       if (before.size() != now.size()) before.assign(now.size(), Eigen::Vector2d::Zero());
       for (std::size_t node = 0; node < now.size(); ++node) {
-        const Eigen::Vector2d step = solver_->displacement().segment<2>(2 * node) - u_before.segment<2>(2 * node);
+        const Eigen::Vector2d step =
+            solver_->displacement().segment<2>(2 * node) - u_before.segment<2>(2 * node);
         *work[part] += 0.5 * (before[node] + now[node]).dot(step);
       }
       before.swap(now);
     }
   };
   // Each part's force on the plate's nodes at the step's end (reused buffers).
-  for (auto& v : nodal_force_) v.assign(static_cast<std::size_t>(solver_->node_count()), Eigen::Vector2d::Zero());
+  for (auto& v : nodal_force_)
+    v.assign(static_cast<std::size_t>(solver_->node_count()), Eigen::Vector2d::Zero());
   auto add_surface_forces = [&] {
     for (auto& l : loads_) {
       const int node = l->nodes()[0];
@@ -307,13 +314,14 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
     invaders.push_back({x, g.mass, c.segment, c.projection.eta, relocated_gap(c.projection.gap, layer)});
     if (params_.trace)  // one line per invader
       std::fprintf(stderr, "invader t=%.6f gid=%lld x=(%.7f, %.7f) seg=%d eta=%.4f gap=%.3e m=%.3e\n", t,
-                   static_cast<long long>(g.gid), g.x, g.y, c.segment, c.projection.eta, c.projection.gap, g.mass);
+                   static_cast<long long>(g.gid), g.x, g.y, c.segment, c.projection.eta, c.projection.gap,
+                   g.mass);
     predicted_gap.push_back(c.projection.gap);
   }
   // Unilateral contact by an active set: an invader the converged solve pulls towards the plate (normal force
   // C . n < 0, the plate moving away faster than the target allows) is released and Newton continues from the
-  // current iterate with the others. A released particle keeps its predicted state, so only particles predicted
-  // outside the surface (in the layer) may be released: one predicted past it stays in the solve.
+  // current iterate with the others. A released particle keeps its predicted state, so only particles
+  // predicted outside the surface (in the layer) may be released: one predicted past it stays in the solve.
   std::vector<int> active(gathered.size());
   for (std::size_t k = 0; k < active.size(); ++k) active[k] = static_cast<int>(k);
   const auto& segments = solver_->mesh().surface;
@@ -339,8 +347,8 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
   solver_->end_step();
   last_.newton_iterations = iterations;
   add_surface_forces();
-  // The contact's share of the load breakdown: each active invader's force, its opposite on the plate shared by
-  // its segment's points ((1 - eta), eta as in eq. 19), and its work over the step.
+  // The contact's share of the load breakdown: each active invader's force, its opposite on the plate shared
+  // by its segment's points ((1 - eta), eta as in eq. 19), and its work over the step.
   for (std::size_t j = 0; j < active.size(); ++j) {
     const ContactInvader& c = invaders[static_cast<std::size_t>(active[j])];
     const Eigen::Vector2d on_plate = -system_->forces()[j];
@@ -382,12 +390,14 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
       out.dvx = out.dx / dt;
       out.dvy = out.dy / dt;
     } else {
-      // Inelastic contact without the relocation's velocity: remove the normal approach relative to the surface.
+      // Inelastic contact without the relocation's velocity: remove the normal approach relative to the
+      // surface.
       const auto& seg = segments[static_cast<std::size_t>(invaders[k].segment)];
       const Eigen::Vector2d xf = solver_->position(seg.first), xs = solver_->position(seg.second);
       const Eigen::Vector2d d = xs - xf;
       const Eigen::Vector2d n = Eigen::Vector2d(d.y(), -d.x()).normalized();
-      const double eta = std::clamp(d.dot(y - xf) / d.squaredNorm(), 0.0, 1.0);  // eq. 20 at the final surface
+      const double eta =
+          std::clamp(d.dot(y - xf) / d.squaredNorm(), 0.0, 1.0);  // eq. 20 at the final surface
       const Eigen::Vector2d vs = (1.0 - eta) * solver_->velocity().segment<2>(2 * seg.first) +
                                  eta * solver_->velocity().segment<2>(2 * seg.second);
       const double vn = (Eigen::Vector2d(gathered[k].vx, gathered[k].vy) - vs).dot(n);
@@ -429,7 +439,8 @@ const CouplingStepReport& ContactCoupling::step(double t, double dt, const Inter
       corrections = solve_on_root(t, dt, last_.layer, gathered);
     } catch (const NumericalError& e) {
       std::ostringstream s;
-      s << "coupling step t = " << t << " -> " << t + dt << " s (" << gathered.size() << " invaders): " << e.what();
+      s << "coupling step t = " << t << " -> " << t + dt << " s (" << gathered.size()
+        << " invaders): " << e.what();
       throw NumericalError(s.str());
     }
   });
@@ -452,16 +463,17 @@ const CouplingStepReport& ContactCoupling::step(double t, double dt, const Inter
     last_.force_x = summary[2];
     last_.force_y = summary[3];
     last_.max_force = summary[4];
-    static_assert(sizeof(PlateLoadBreakdown) == 21 * sizeof(double), "the breakdown is broadcast as 21 doubles");
+    static_assert(sizeof(PlateLoadBreakdown) == 21 * sizeof(double),
+                  "the breakdown is broadcast as 21 doubles");
     MPI_Bcast(&breakdown_, 21, MPI_DOUBLE, root_, comm_.get());
     const std::vector<Eigen::Vector2d> before = surface_.points;
     broadcast_surface();
-    // The surface's velocity for the water is its mean velocity over the step, (x_n+1 - x_n) / dt: the Newmark
-    // (trapezoidal) nodal velocity carries the plate's undamped high-frequency content, v_n+1 = 2 (u_n+1 - u_n) /
-    // dt - v_n, and fed back through the plate-wall ghosts it grew into a plate-water oscillation (docs/coupling.md).
-    // Explicit exchange: extrapolated to the coming step's middle, 2 v_n+1/2 - v_n-1/2; the converged exchange uses
-    // this step's own motion (Fluid::update_density) and has the faces' velocity in the next force computation lag
-    // half a step (the viscous term only).
+    // The surface's velocity for the water is its mean velocity over the step, (x_n+1 - x_n) / dt: the
+    // Newmark (trapezoidal) nodal velocity carries the plate's undamped high-frequency content, v_n+1 = 2
+    // (u_n+1 - u_n) / dt - v_n, and fed back through the plate-wall ghosts it grew into a plate-water
+    // oscillation (docs/coupling.md). Explicit exchange: extrapolated to the coming step's middle, 2 v_n+1/2
+    // - v_n-1/2; the converged exchange uses this step's own motion (Fluid::update_density) and has the
+    // faces' velocity in the next force computation lag half a step (the viscous term only).
     if (before.size() == surface_.points.size()) {
       const bool first = mean_velocity_.size() != 2 * before.size();
       mean_velocity_.resize(2 * before.size());
@@ -504,7 +516,8 @@ void ContactCoupling::restore_state(const std::vector<double>& state) {
   const double* p = state.data();
   const double* end = p + state.size();
   auto take_count = [&](std::size_t each) {
-    if (p >= end) HALFETI_USER_ERROR("restart: the coupling's state is shorter than this scene's coupling needs");
+    if (p >= end)
+      HALFETI_USER_ERROR("restart: the coupling's state is shorter than this scene's coupling needs");
     const auto n = static_cast<std::size_t>(*p++);
     if (static_cast<std::size_t>(end - p) < n * each)
       HALFETI_USER_ERROR("restart: the coupling's state is shorter than this scene's coupling needs");
@@ -516,17 +529,18 @@ void ContactCoupling::restore_state(const std::vector<double>& state) {
     p += n;
   }
   if (surface_motion_.size() != 4 * surface_.points.size())
-    HALFETI_USER_ERROR("restart: the coupling's state is for a plate surface of " << surface_motion_.size() / 4
-                                                                                  << " points, this scene's has "
-                                                                                  << surface_.points.size());
-  if (end - p < 23) HALFETI_USER_ERROR("restart: the coupling's state is shorter than this scene's coupling needs");
+    HALFETI_USER_ERROR("restart: the coupling's state is for a plate surface of "
+                       << surface_motion_.size() / 4 << " points, this scene's has "
+                       << surface_.points.size());
+  if (end - p < 23)
+    HALFETI_USER_ERROR("restart: the coupling's state is shorter than this scene's coupling needs");
   std::copy(p, p + 2, fluid_load_);
   p += 2;
   std::copy(p, p + 21, reinterpret_cast<double*>(&breakdown_));
   p += 21;
   const std::size_t loads = take_count(5);
-  // One load per surface point: the root's count (a checkpoint holds the root's copy on every rank), or, for a step
-  // taken back within a run, this rank's own (none off the root).
+  // One load per surface point: the root's count (a checkpoint holds the root's copy on every rank), or, for
+  // a step taken back within a run, this rank's own (none off the root).
   if (loads != surface_.points.size() && loads != loads_.size())
     HALFETI_USER_ERROR("restart: the coupling's state has " << loads << " surface loads, this scene's plate "
                                                             << surface_.points.size());

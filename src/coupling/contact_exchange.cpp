@@ -1,5 +1,5 @@
-// The converged plate-water exchange's verdict on one evaluation of the water's load (docs/coupling.md, section 16):
-// ContactCoupling::converge_exchange, kept apart from the coupled step it repeats.
+// The converged plate-water exchange's verdict on one evaluation of the water's load (docs/coupling.md,
+// section 16): ContactCoupling::converge_exchange, kept apart from the coupled step it repeats.
 #include <cstdio>
 
 #include "halfeti/core/error.hpp"
@@ -26,17 +26,18 @@ ExchangeIterate ContactCoupling::converge_exchange(const std::vector<sph::PlateW
       Eigen::Index worst = 0;
       (produced - in).cwiseAbs().maxCoeff(&worst);
       const auto point = static_cast<std::size_t>(worst / 2);
-      std::fprintf(stderr,
-                   "exchange_trace k=%d residual=%.3e invaders=%d |F_out|=%.4g worst point %zu at (%.5f, %.5f): "
-                   "in %.4g out %.4g\n",
-                   out.iteration, verdict[0], last_.invaders, produced.norm(), point, surface_.points[point].x(),
-                   surface_.points[point].y(), in(worst), produced(worst));
+      std::fprintf(
+          stderr,
+          "exchange_trace k=%d residual=%.3e invaders=%d |F_out|=%.4g worst point %zu at (%.5f, %.5f): "
+          "in %.4g out %.4g\n",
+          out.iteration, verdict[0], last_.invaders, produced.norm(), point, surface_.points[point].x(),
+          surface_.points[point].y(), in(worst), produced(worst));
     }
-    // The water's load is piecewise smooth in the plate's motion: a particle within round-off of a face is water on
-    // one side and the contact's on the other, and its ghost load (up to half the plate's total, measured on the
-    // paper's plate) switches with it. Where that keeps the exchange from converging, the iteration stops after
-    // kStall evaluations without a new best, or at max_iterations, and the step is taken with the best iterate
-    // (evaluated once more when it was not the last).
+    // The water's load is piecewise smooth in the plate's motion: a particle within round-off of a face is
+    // water on one side and the contact's on the other, and its ghost load (up to half the plate's total,
+    // measured on the paper's plate) switches with it. Where that keeps the exchange from converging, the
+    // iteration stops after kStall evaluations without a new best, or at max_iterations, and the step is
+    // taken with the best iterate (evaluated once more when it was not the last).
     constexpr int kStall = 3;
     if (out.iteration == 0 || verdict[0] < best_residual_) {
       best_residual_ = verdict[0];
@@ -45,7 +46,8 @@ ExchangeIterate ContactCoupling::converge_exchange(const std::vector<sph::PlateW
     }
     if (returning_to_best_ || verdict[0] <= params_.implicit.tolerance) {
       verdict[1] = 1.0;  // accept
-    } else if (exchange_iteration_ >= params_.implicit.max_iterations || out.iteration - best_iteration_ >= kStall) {
+    } else if (exchange_iteration_ >= params_.implicit.max_iterations ||
+               out.iteration - best_iteration_ >= kStall) {
       if (best_iteration_ == out.iteration) {
         verdict[1] = 1.0;
       } else {
@@ -55,7 +57,8 @@ ExchangeIterate ContactCoupling::converge_exchange(const std::vector<sph::PlateW
       }
     } else {
       const Eigen::VectorXd next = accelerator_.next(in, produced);
-      for (Eigen::Index k = 0; k < n; ++k) loads_[static_cast<std::size_t>(k)]->set_force(next.segment<2>(2 * k));
+      for (Eigen::Index k = 0; k < n; ++k)
+        loads_[static_cast<std::size_t>(k)]->set_force(next.segment<2>(2 * k));
     }
     if (verdict[1] != 0.0) returning_to_best_ = false;
   }

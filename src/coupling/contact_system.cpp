@@ -170,12 +170,13 @@ std::pair<double, double> ContactSystem::assemble(const std::vector<ContactInvad
 
 void ContactSystem::solve_linear(double when) {
   ScopedTimer timer(timers_, "solve");
-  const KSPConvergedReason reason = structure::solve_with(ksp_.get(), matrix_.get(), rhs_.get(), solution_.get());
+  const KSPConvergedReason reason =
+      structure::solve_with(ksp_.get(), matrix_.get(), rhs_.get(), solution_.get());
   if (reason < 0)
     HALFETI_NUMERICAL_ERROR("coupling: contact solve (eq. 21) failed at t = "
-                            << when << " s with " << n_inv_ << " invaders: " << structure::ksp_failure(ksp_.get(), reason)
-                            << "; the default is -" << prefix_ << "pc_type lu -" << prefix_
-                            << "pc_factor_mat_solver_type mumps");
+                            << when << " s with " << n_inv_ << " invaders: "
+                            << structure::ksp_failure(ksp_.get(), reason) << "; the default is -" << prefix_
+                            << "pc_type lu -" << prefix_ << "pc_factor_mat_solver_type mumps");
 }
 
 ContactSolveReport ContactSystem::solve(const std::vector<ContactInvader>& invaders, double dt, double when) {

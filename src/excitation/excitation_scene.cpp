@@ -9,7 +9,8 @@ namespace {
 
 std::shared_ptr<Schema> pulse_keys() {
   auto s = std::make_shared<Schema>();
-  s->add(Key::real("amplitude", "peak ground acceleration of the cycle", "m/s^2").required().in(-100.0, 100.0));
+  s->add(
+      Key::real("amplitude", "peak ground acceleration of the cycle", "m/s^2").required().in(-100.0, 100.0));
   s->add(Key::real("period", "duration of the one cycle", "s").required().positive().at_most(100.0));
   s->add(Key::real("start", "time the cycle begins", "s").def(0.0).non_negative());
   return s;
@@ -33,8 +34,9 @@ Registry<GroundMotionFactory> build_registry() {
           return make_cosine_pulse(s.real("amplitude"), s.real("period"), s.real("start"));
         });
   auto record = std::make_shared<Schema>();
-  record->add(Key::string("file", "CSV accelerogram: '#' lines, a header row, then t, a rows (relative to the scene)")
-                  .required());
+  record->add(
+      Key::string("file", "CSV accelerogram: '#' lines, a header row, then t, a rows (relative to the scene)")
+          .required());
   record->add(Key::choice("units", "units of the acceleration column", {"g", "m/s2"}).def("g"));
   record->add(Key::real("scale", "factor applied to every sample").def(1.0).in(-100.0, 100.0));
   record->add(Key::real("start", "record applied from this time", "s").def(0.0).non_negative());
@@ -58,7 +60,8 @@ const Registry<GroundMotionFactory>& ground_motion_registry() {
 
 std::shared_ptr<const Schema> excitation_schema() {
   return ground_motion_registry().section_schema(
-      "kind", "Horizontal ground motion of the tank; in the tank's frame every mass feels -a_g(t).", {}, "none");
+      "kind", "Horizontal ground motion of the tank; in the tank's frame every mass feels -a_g(t).", {},
+      "none");
 }
 
 std::unique_ptr<GroundMotion> make_ground_motion(const scene::Node& section, const std::string& scene_dir) {

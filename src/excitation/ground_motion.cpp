@@ -31,8 +31,8 @@ class OneCyclePulse final : public GroundMotion {
   }
   std::string describe() const override {
     std::ostringstream os;
-    os << "one-cycle " << (cosine_ ? "cosine" : "sine") << " pulse, amplitude " << amplitude_ << " m/s^2, period "
-       << period_ << " s, from t = " << start_ << " s";
+    os << "one-cycle " << (cosine_ ? "cosine" : "sine") << " pulse, amplitude " << amplitude_
+       << " m/s^2, period " << period_ << " s, from t = " << start_ << " s";
     return os.str();
   }
 
@@ -71,7 +71,9 @@ class SampledRecord final : public GroundMotion {
 
 }  // namespace
 
-std::unique_ptr<GroundMotion> make_still() { return std::make_unique<Still>(); }
+std::unique_ptr<GroundMotion> make_still() {
+  return std::make_unique<Still>();
+}
 
 std::unique_ptr<GroundMotion> make_sine_pulse(double amplitude, double period, double start) {
   HALFETI_CHECK(period > 0, "pulse period must be positive");
@@ -83,10 +85,12 @@ std::unique_ptr<GroundMotion> make_cosine_pulse(double amplitude, double period,
   return std::make_unique<OneCyclePulse>(true, amplitude, period, start);
 }
 
-std::unique_ptr<GroundMotion> make_record(std::vector<double> times, std::vector<double> accelerations, double start,
-                                          double end, std::string source) {
-  HALFETI_CHECK(times.size() == accelerations.size() && times.size() >= 2, "a record needs two or more samples");
-  return std::make_unique<SampledRecord>(std::move(times), std::move(accelerations), start, end, std::move(source));
+std::unique_ptr<GroundMotion> make_record(std::vector<double> times, std::vector<double> accelerations,
+                                          double start, double end, std::string source) {
+  HALFETI_CHECK(times.size() == accelerations.size() && times.size() >= 2,
+                "a record needs two or more samples");
+  return std::make_unique<SampledRecord>(std::move(times), std::move(accelerations), start, end,
+                                         std::move(source));
 }
 
 }  // namespace halfeti::excitation

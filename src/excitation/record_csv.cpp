@@ -1,6 +1,5 @@
 // Reading accelerogram CSV files (e.g. inputs/records/elcentro_ns.csv).
 #include <cmath>
-
 #include <fstream>
 #include <sstream>
 
@@ -16,8 +15,7 @@ constexpr double kStandardGravity = 9.80665;
 
 std::unique_ptr<GroundMotion> read_record_csv(const std::string& path, const std::string& units, double scale,
                                               double start, double end, double time_shift) {
-  if (is_directory(path))
-    HALFETI_USER_ERROR("accelerogram '" << path << "' is a folder, not a record file");
+  if (is_directory(path)) HALFETI_USER_ERROR("accelerogram '" << path << "' is a folder, not a record file");
   std::ifstream in(path);
   if (!in) HALFETI_USER_ERROR("cannot open accelerogram '" << path << "': no such file or not readable");
   double unit_factor = 1.0;
@@ -47,12 +45,14 @@ std::unique_ptr<GroundMotion> read_record_csv(const std::string& path, const std
       ti = std::stod(c0, &used0);
       ai = std::stod(c1, &used1);
     } catch (const std::exception&) {
-      HALFETI_USER_ERROR(path << ":" << line_no << ": expected 'time, acceleration' numbers, found '" << line << "'");
+      HALFETI_USER_ERROR(path << ":" << line_no << ": expected 'time, acceleration' numbers, found '" << line
+                              << "'");
     }
     if (!std::isfinite(ti) || !std::isfinite(ai))
       HALFETI_USER_ERROR(path << ":" << line_no << ": non-finite value in '" << line << "'");
     if (!t.empty() && ti <= t.back())
-      HALFETI_USER_ERROR(path << ":" << line_no << ": times must increase, found " << ti << " after " << t.back());
+      HALFETI_USER_ERROR(path << ":" << line_no << ": times must increase, found " << ti << " after "
+                              << t.back());
     t.push_back(ti + time_shift);
     a.push_back(ai * unit_factor * scale);
   }

@@ -19,7 +19,6 @@ namespace {
 constexpr double kFormat = 1.0;  // the layout below; a reader refuses another
 constexpr const char* kPrefix = "checkpoint_";
 
-
 // Rank 0's names and sizes, known to every rank (datasets are created collectively).
 template <class Map>
 std::vector<std::pair<std::string, long long>> shared_layout(MPI_Comm comm, const Map& m) {
@@ -83,8 +82,8 @@ void write_checkpoint(MPI_Comm comm, const std::string& path, const Checkpoint& 
       const std::pair<const char*, const std::vector<double>*> arrays[] = {
           {"x", &p.x}, {"y", &p.y}, {"vx", &p.vx}, {"vy", &p.vy}, {"rho", &p.rho}, {"mass", &p.mass}};
       for (const auto& [name, v] : arrays) {
-        HALFETI_CHECK(static_cast<long long>(v->size()) == local, "checkpoint: " << name << " has " << v->size()
-                                                                                 << " values for " << local);
+        HALFETI_CHECK(static_cast<long long>(v->size()) == local,
+                      "checkpoint: " << name << " has " << v->size() << " values for " << local);
         h5::write_slab(group, name, H5T_NATIVE_DOUBLE, v->data(), offset, local, total, partial);
       }
     }
@@ -94,7 +93,8 @@ void write_checkpoint(MPI_Comm comm, const std::string& path, const Checkpoint& 
                std::string("group ") + group_name + " in '" + partial + "'");
       for (const auto& [name, size] : layout) {
         const auto it = values.find(name);
-        HALFETI_CHECK(it != values.end(), "checkpoint " << group_name << " '" << name << "' missing on rank " << rank);
+        HALFETI_CHECK(it != values.end(),
+                      "checkpoint " << group_name << " '" << name << "' missing on rank " << rank);
         h5::write_slab(group, name, type, it->second.data(), 0, rank == 0 ? size : 0, size, partial);
       }
     };
@@ -126,7 +126,8 @@ Checkpoint read_checkpoint(const std::string& path) {
   c.steps = static_cast<long long>(h5::read_double_attribute(file, "steps", path));
   c.ranks = static_cast<int>(h5::read_double_attribute(file, "ranks", path));
   {
-    Id group(H5Gopen2(file, "particles", H5P_DEFAULT), H5Gclose, Use::kRead, "group particles of '" + path + "'");
+    Id group(H5Gopen2(file, "particles", H5P_DEFAULT), H5Gclose, Use::kRead,
+             "group particles of '" + path + "'");
     ParticleArrays& p = c.particles;
     p.gid = h5::read_all<std::int64_t>(group, "gid", H5T_NATIVE_INT64, path);
     const std::pair<const char*, std::vector<double>*> arrays[] = {
@@ -134,12 +135,13 @@ Checkpoint read_checkpoint(const std::string& path) {
     for (const auto& [name, v] : arrays) {
       *v = h5::read_all<double>(group, name, H5T_NATIVE_DOUBLE, path);
       if (v->size() != p.gid.size())
-        HALFETI_USER_ERROR("restart: '" << path << "': particles/" << name << " has " << v->size() << " values for "
-                                        << p.gid.size() << " particles");
+        HALFETI_USER_ERROR("restart: '" << path << "': particles/" << name << " has " << v->size()
+                                        << " values for " << p.gid.size() << " particles");
     }
   }
   for (const char* kind : {"blocks", "texts"}) {
-    Id group(H5Gopen2(file, kind, H5P_DEFAULT), H5Gclose, Use::kRead, std::string("group ") + kind + " of '" + path + "'");
+    Id group(H5Gopen2(file, kind, H5P_DEFAULT), H5Gclose, Use::kRead,
+             std::string("group ") + kind + " of '" + path + "'");
     H5G_info_t info;
     h5::check(H5Gget_info(group, &info), Use::kRead, "group info of '" + path + "'");
     for (hsize_t i = 0; i < info.nlinks; ++i) {
@@ -174,12 +176,14 @@ std::vector<std::string> list_checkpoints(const std::string& dir) {
 
 std::string resolve_checkpoint(const std::string& path) {
   if (is_regular_file(path)) return path;
-  if (!is_directory(path)) HALFETI_USER_ERROR("restart: '" << path << "' is neither a checkpoint nor a folder");
+  if (!is_directory(path))
+    HALFETI_USER_ERROR("restart: '" << path << "' is neither a checkpoint nor a folder");
   for (const std::string& dir : {path + "/checkpoints", path}) {
     const auto all = list_checkpoints(dir);
     if (!all.empty()) return all.back();
   }
-  HALFETI_USER_ERROR("restart: no checkpoint (" << kPrefix << "*.h5) in '" << path << "' or its checkpoints/");
+  HALFETI_USER_ERROR("restart: no checkpoint (" << kPrefix << "*.h5) in '" << path
+                                                << "' or its checkpoints/");
 }
 
 }  // namespace halfeti::io

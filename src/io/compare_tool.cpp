@@ -1,6 +1,5 @@
 #include "halfeti/io/compare_tool.hpp"
 
-
 #include <cmath>
 #include <cstdlib>
 #include <iomanip>
@@ -74,19 +73,32 @@ int run_compare_tool(const std::vector<std::string>& args, std::ostream& out) {
       if (i + 1 >= args.size()) HALFETI_USER_ERROR("compare: option " << a << " needs a value");
       return args[++i];
     };
-    if (a == "--probe") probe = value();
-    else if (a == "--metric") name = value();
-    else if (a == "--reference") reference = value();
-    else if (a == "--columns") columns = value();
-    else if (a == "--reference-scale") std::tie(ts, vs) = two_numbers(a, value());
-    else if (a == "--probe-scale") probe_scale = number(a, value());
-    else if (a == "--subtract-initial") subtract_initial = true;
-    else if (a == "--window") std::tie(window.from, window.to) = two_numbers(a, value());
-    else if (a == "--relative-to") scale = number(a, value());
-    else if (a == "--reference-value") reference_value = number(a, value());
-    else if (!a.empty() && a[0] == '-') HALFETI_USER_ERROR("compare: unknown option '" << a << "' (halfeti compare --help)");
-    else if (run.empty()) run = a;
-    else HALFETI_USER_ERROR("compare: one run only, found '" << run << "' and '" << a << "'");
+    if (a == "--probe")
+      probe = value();
+    else if (a == "--metric")
+      name = value();
+    else if (a == "--reference")
+      reference = value();
+    else if (a == "--columns")
+      columns = value();
+    else if (a == "--reference-scale")
+      std::tie(ts, vs) = two_numbers(a, value());
+    else if (a == "--probe-scale")
+      probe_scale = number(a, value());
+    else if (a == "--subtract-initial")
+      subtract_initial = true;
+    else if (a == "--window")
+      std::tie(window.from, window.to) = two_numbers(a, value());
+    else if (a == "--relative-to")
+      scale = number(a, value());
+    else if (a == "--reference-value")
+      reference_value = number(a, value());
+    else if (!a.empty() && a[0] == '-')
+      HALFETI_USER_ERROR("compare: unknown option '" << a << "' (halfeti compare --help)");
+    else if (run.empty())
+      run = a;
+    else
+      HALFETI_USER_ERROR("compare: one run only, found '" << run << "' and '" << a << "'");
   }
   if (run.empty()) HALFETI_USER_ERROR("compare: no run given (halfeti compare --help)");
   if (probe.empty()) HALFETI_USER_ERROR("compare: --probe NAME is required");
@@ -117,7 +129,8 @@ int run_compare_tool(const std::vector<std::string>& args, std::ostream& out) {
     std::string tc, vc;
     if (!columns.empty()) {
       const std::size_t comma = columns.find(',');
-      if (comma == std::string::npos) HALFETI_USER_ERROR("compare: --columns takes T,V, found '" << columns << "'");
+      if (comma == std::string::npos)
+        HALFETI_USER_ERROR("compare: --columns takes T,V, found '" << columns << "'");
       tc = columns.substr(0, comma);
       vc = columns.substr(comma + 1);
     }
@@ -132,7 +145,9 @@ int run_compare_tool(const std::vector<std::string>& args, std::ostream& out) {
   }
   Json j = Json::object();
   j.set("run", run).set("probe", probe).set("metric", name).set("value", v);
-  j.set("reference", !reference.empty() ? Json(reference) : reference_value ? Json(*reference_value) : Json());
+  j.set("reference", !reference.empty() ? Json(reference)
+                     : reference_value  ? Json(*reference_value)
+                                        : Json());
   j.set("scale", scale ? Json(*scale) : Json());
   j.set("relative", scale && *scale != 0.0 ? Json(v / *scale) : Json());
   out << j.dump() << "\n";

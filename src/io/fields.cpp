@@ -1,13 +1,13 @@
 #include "halfeti/io/fields.hpp"
 
 #include <hdf5.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
-#include <sys/stat.h>
 
 #include "halfeti/core/collective.hpp"
 #include "halfeti/core/error.hpp"
@@ -18,7 +18,9 @@ namespace halfeti::io {
 
 namespace {
 
-const char* center_name(Center c) { return c == Center::kCell ? "cell" : "node"; }
+const char* center_name(Center c) {
+  return c == Center::kCell ? "cell" : "node";
+}
 
 }  // namespace
 
@@ -41,7 +43,8 @@ std::string FieldSeries::write(double time, std::size_t n_local, const double* x
   const std::string file_name = name_ + buf;
   const std::string path = dir_ + "/" + file_name, partial = path + ".partial";
 
-  long long local[2] = {static_cast<long long>(n_local), cells ? static_cast<long long>(cells->n_local_cells) : 0};
+  long long local[2] = {static_cast<long long>(n_local),
+                        cells ? static_cast<long long>(cells->n_local_cells) : 0};
   long long offset[2] = {0, 0}, total[2] = {0, 0};
   MPI_Exscan(local, offset, 2, MPI_LONG_LONG, MPI_SUM, comm_);
   int rank = 0;
@@ -58,13 +61,15 @@ std::string FieldSeries::write(double time, std::size_t n_local, const double* x
     h5::write_slab(file, "x", H5T_NATIVE_DOUBLE, x, offset[0], local[0], total[0], partial);
     h5::write_slab(file, "y", H5T_NATIVE_DOUBLE, y, offset[0], local[0], total[0], partial);
     for (const auto& f : fields) {
-      HALFETI_CHECK(f.name != "x" && f.name != "y" && f.name != "cells", "field name '" << f.name << "' is reserved");
+      HALFETI_CHECK(f.name != "x" && f.name != "y" && f.name != "cells",
+                    "field name '" << f.name << "' is reserved");
       HALFETI_CHECK(!f.is_integer || f.components == 1, "integer field '" << f.name << "' has one component");
       HALFETI_CHECK(f.components == 1 || f.components == 3, "field '" << f.name << "': 1 or 3 components");
       HALFETI_CHECK(f.center == Center::kNode || cells, "cell field '" << f.name << "' without cells");
       const int row = f.center == Center::kCell ? 1 : 0;
       if (f.is_integer)
-        h5::write_slab(file, f.name, H5T_NATIVE_INT64, f.integer, offset[row], local[row], total[row], partial);
+        h5::write_slab(file, f.name, H5T_NATIVE_INT64, f.integer, offset[row], local[row], total[row],
+                       partial);
       else
         h5::write_slab(file, f.name, H5T_NATIVE_DOUBLE, f.real, offset[row], local[row], total[row], partial,
                        f.components);
@@ -78,7 +83,8 @@ std::string FieldSeries::write(double time, std::size_t n_local, const double* x
     h5::write_attribute(file, "fields", order, partial);
     if (cells) {
       const long long npc = cells->nodes_per_cell;
-      h5::write_slab(file, "cells", H5T_NATIVE_INT64, cells->connectivity, offset[1], local[1], total[1], partial,
+      h5::write_slab(file, "cells", H5T_NATIVE_INT64, cells->connectivity, offset[1], local[1], total[1],
+                     partial,
                      static_cast<int>(npc));  // one row per cell, as the XDMF states it
       frame.n_cells = total[1];
       frame.topology = cells->xdmf_topology;
@@ -94,13 +100,14 @@ std::string FieldSeries::write(double time, std::size_t n_local, const double* x
   }
   rename_on_root(comm_, partial, path);
   frames_.push_back(frame);
-  collective_outcome(comm_, 0, rank == 0, [&] { write_xdmf(); });  // rank 0 writes; a failure stops every rank
+  collective_outcome(comm_, 0, rank == 0,
+                     [&] { write_xdmf(); });  // rank 0 writes; a failure stops every rank
   return path;
 }
 
 void FieldSeries::resume(double time) {
-  // Rank 0 reads the series' files in order and keeps those at or before `time` (within round-off of it), removing
-  // the later ones; the others keep the count, which names the next file.
+  // Rank 0 reads the series' files in order and keeps those at or before `time` (within round-off of it),
+  // removing the later ones; the others keep the count, which names the next file.
   int rank = 0;
   MPI_Comm_rank(comm_, &rank);
   frames_.clear();
@@ -142,8 +149,8 @@ void FieldSeries::write_xdmf() const {
         << "  <Grid Name=\"" << name_ << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
     for (const auto& f : frames_) {
       const auto item = [&](const std::string& ds, long long n, const char* type, int precision) {
-        out << "     <DataItem Dimensions=\"" << n << "\" NumberType=\"" << type << "\" Precision=\"" << precision
-            << "\" Format=\"HDF\">" << f.file << ":/" << ds << "</DataItem>\n";
+        out << "     <DataItem Dimensions=\"" << n << "\" NumberType=\"" << type << "\" Precision=\""
+            << precision << "\" Format=\"HDF\">" << f.file << ":/" << ds << "</DataItem>\n";
       };
       out << "   <Grid Name=\"" << name_ << "\" GridType=\"Uniform\">\n";
       char t[40];
@@ -167,13 +174,14 @@ void FieldSeries::write_xdmf() const {
         const FieldLayout& a = f.layouts[k];
         const std::string& name = f.names[k];
         const long long rows = a.center == Center::kCell ? f.n_cells : f.n_points;
-        out << "    <Attribute Name=\"" << name << "\" AttributeType=\"" << (a.components == 3 ? "Vector" : "Scalar")
-            << "\" Center=\"" << (a.center == Center::kCell ? "Cell" : "Node") << "\">\n";
+        out << "    <Attribute Name=\"" << name << "\" AttributeType=\""
+            << (a.components == 3 ? "Vector" : "Scalar") << "\" Center=\""
+            << (a.center == Center::kCell ? "Cell" : "Node") << "\">\n";
         if (!a.unit.empty()) out << "     <Information Name=\"unit\" Value=\"" << a.unit << "\"/>\n";
         out << "     <DataItem Dimensions=\"" << rows;
         if (a.components > 1) out << " " << a.components;
-        out << "\" NumberType=\"" << (a.integer ? "Int" : "Float") << "\" Precision=\"8\" Format=\"HDF\">" << f.file
-            << ":/" << name << "</DataItem>\n";
+        out << "\" NumberType=\"" << (a.integer ? "Int" : "Float") << "\" Precision=\"8\" Format=\"HDF\">"
+            << f.file << ":/" << name << "</DataItem>\n";
         out << "    </Attribute>\n";
       }
       out << "   </Grid>\n";
@@ -269,7 +277,8 @@ void rename_on_root(MPI_Comm comm, const std::string& from, const std::string& t
   int failed = 0;
   if (rank == 0 && std::rename(from.c_str(), to.c_str()) != 0) failed = errno;
   MPI_Bcast(&failed, 1, MPI_INT, 0, comm);
-  if (failed != 0) HALFETI_IO_ERROR("cannot rename '" << from << "' to '" << to << "': " << std::strerror(failed));
+  if (failed != 0)
+    HALFETI_IO_ERROR("cannot rename '" << from << "' to '" << to << "': " << std::strerror(failed));
 }
 
 }  // namespace halfeti::io

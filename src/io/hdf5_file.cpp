@@ -2,15 +2,14 @@
 
 #include <sys/statvfs.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
-#include <algorithm>
 
 #include "halfeti/core/error.hpp"
 
 namespace halfeti::io::h5 {
-
 
 namespace {
 MPI_Comm g_collective = MPI_COMM_NULL;  // set by CollectiveWrites
@@ -87,8 +86,9 @@ void write_slab(hid_t where, const std::string& name, hid_t type, const void* da
   Id filespace(H5Dget_space(dset), H5Sclose, Use::kWrite, "file space of " + name);
   Id memspace(H5Screate_simple(rank, cnt, nullptr), H5Sclose, Use::kWrite, "memory space of " + name);
   // The same checks on every rank (they are collective under CollectiveWrites), whether it writes or not.
-  const herr_t selected = count > 0 ? H5Sselect_hyperslab(filespace, H5S_SELECT_SET, start, nullptr, cnt, nullptr)
-                                    : std::min(H5Sselect_none(filespace), H5Sselect_none(memspace));
+  const herr_t selected = count > 0
+                              ? H5Sselect_hyperslab(filespace, H5S_SELECT_SET, start, nullptr, cnt, nullptr)
+                              : std::min(H5Sselect_none(filespace), H5Sselect_none(memspace));
   check(selected, Use::kWrite, "select " + name);
   Id xfer(H5Pcreate(H5P_DATASET_XFER), H5Pclose, Use::kWrite, "transfer list");
   check(H5Pset_dxpl_mpio(xfer, H5FD_MPIO_COLLECTIVE), Use::kWrite, "collective transfer");
@@ -103,7 +103,8 @@ void write_attribute(hid_t where, const std::string& name, double value, const s
   check(H5Awrite(attr, H5T_NATIVE_DOUBLE, &value), Use::kWrite, "write " + name + " to '" + file + "'");
 }
 
-void write_attribute(hid_t where, const std::string& name, const std::string& value, const std::string& file) {
+void write_attribute(hid_t where, const std::string& name, const std::string& value,
+                     const std::string& file) {
   Id type(H5Tcopy(H5T_C_S1), H5Tclose, Use::kWrite, "string type");
   check(H5Tset_size(type, value.empty() ? 1 : value.size()), Use::kWrite, "string size");
   Id space(H5Screate(H5S_SCALAR), H5Sclose, Use::kWrite, "scalar space");
@@ -114,14 +115,16 @@ void write_attribute(hid_t where, const std::string& name, const std::string& va
 }
 
 double read_double_attribute(hid_t where, const std::string& name, const std::string& file) {
-  Id attr(H5Aopen(where, name.c_str(), H5P_DEFAULT), H5Aclose, Use::kRead, "attribute " + name + " of '" + file + "'");
+  Id attr(H5Aopen(where, name.c_str(), H5P_DEFAULT), H5Aclose, Use::kRead,
+          "attribute " + name + " of '" + file + "'");
   double value = 0.0;
   check(H5Aread(attr, H5T_NATIVE_DOUBLE, &value), Use::kRead, "read " + name + " of '" + file + "'");
   return value;
 }
 
 std::string read_string_attribute(hid_t where, const std::string& name, const std::string& file) {
-  Id attr(H5Aopen(where, name.c_str(), H5P_DEFAULT), H5Aclose, Use::kRead, "attribute " + name + " of '" + file + "'");
+  Id attr(H5Aopen(where, name.c_str(), H5P_DEFAULT), H5Aclose, Use::kRead,
+          "attribute " + name + " of '" + file + "'");
   Id type(H5Aget_type(attr), H5Tclose, Use::kRead, "type of " + name);
   const std::size_t n = H5Tget_size(type);
   std::string value(n, '\0');
@@ -164,12 +167,14 @@ std::vector<T> read_all(hid_t where, const std::string& name, hid_t type, const 
   Id space(H5Dget_space(dset), H5Sclose, Use::kRead, "space of " + name);
   const hssize_t n = H5Sget_simple_extent_npoints(space);
   std::vector<T> out(static_cast<size_t>(n > 0 ? n : 0));
-  if (n > 0) check(H5Dread(dset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), Use::kRead, "read " + name);
+  if (n > 0)
+    check(H5Dread(dset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), Use::kRead, "read " + name);
   return out;
 }
 
 template std::vector<double> read_all<double>(hid_t, const std::string&, hid_t, const std::string&);
-template std::vector<std::int64_t> read_all<std::int64_t>(hid_t, const std::string&, hid_t, const std::string&);
+template std::vector<std::int64_t> read_all<std::int64_t>(hid_t, const std::string&, hid_t,
+                                                          const std::string&);
 template std::vector<char> read_all<char>(hid_t, const std::string&, hid_t, const std::string&);
 
 }  // namespace halfeti::io::h5

@@ -33,11 +33,21 @@ void write_string(std::string& out, const std::string& s) {
   out += '"';
   for (char c : s) {
     switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      case '\r': out += "\\r"; break;
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      case '\r':
+        out += "\\r";
+        break;
       default:
         if (static_cast<unsigned char>(c) < 0x20) {
           char buf[8];
@@ -59,8 +69,12 @@ void Json::write(std::string& out, int indent, int depth) const {
     out.append(static_cast<size_t>(indent * d), ' ');
   };
   switch (type_) {
-    case Type::kNull: out += "null"; break;
-    case Type::kBool: out += bool_ ? "true" : "false"; break;
+    case Type::kNull:
+      out += "null";
+      break;
+    case Type::kBool:
+      out += bool_ ? "true" : "false";
+      break;
     case Type::kNumber: {
       if (!std::isfinite(number_)) {
         out += "null";
@@ -71,7 +85,9 @@ void Json::write(std::string& out, int indent, int depth) const {
       out += buf;
       break;
     }
-    case Type::kString: write_string(out, string_); break;
+    case Type::kString:
+      write_string(out, string_);
+      break;
     case Type::kArray:
       out += '[';
       for (size_t i = 0; i < items_.size(); ++i) {

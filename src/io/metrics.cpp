@@ -10,7 +10,8 @@
 namespace halfeti::io {
 
 double value_at(const Curve& c, double t) {
-  if (c.t.empty() || c.t.size() != c.v.size()) HALFETI_USER_ERROR("metrics: an empty curve (or t and v differ in length)");
+  if (c.t.empty() || c.t.size() != c.v.size())
+    HALFETI_USER_ERROR("metrics: an empty curve (or t and v differ in length)");
   const auto it = std::lower_bound(c.t.begin(), c.t.end(), t);
   if (it == c.t.begin()) return c.v.front();
   if (it == c.t.end()) return c.v.back();
@@ -32,24 +33,26 @@ double mean_over_reference(const Curve& run, const Curve& reference, const Windo
     if (run.t.empty() || t < run.t.front() || t > run.t.back())
       HALFETI_USER_ERROR("metrics: the run (t = " << (run.t.empty() ? 0.0 : run.t.front()) << " ... "
                                                   << (run.t.empty() ? 0.0 : run.t.back())
-                                                  << " s) does not cover the reference's sample at t = " << t << " s");
+                                                  << " s) does not cover the reference's sample at t = " << t
+                                                  << " s");
     sum += f(value_at(run, t), reference.v[k], t);
     ++n;
   }
-  if (n == 0) HALFETI_USER_ERROR("metrics: no reference sample in the window [" << w.from << ", " << w.to << "] s");
+  if (n == 0)
+    HALFETI_USER_ERROR("metrics: no reference sample in the window [" << w.from << ", " << w.to << "] s");
   return sum / static_cast<double>(n);
 }
 }  // namespace
 
 double rms_error(const Curve& run, const Curve& reference, const Window& w) {
-  return std::sqrt(mean_over_reference(run, reference, w, [](double r, double ref, double) {
-    return (r - ref) * (r - ref);
-  }));
+  return std::sqrt(mean_over_reference(run, reference, w,
+                                       [](double r, double ref, double) { return (r - ref) * (r - ref); }));
 }
 
 double rms_relative_error(const Curve& run, const Curve& reference, const Window& w) {
   return std::sqrt(mean_over_reference(run, reference, w, [](double r, double ref, double t) {
-    if (ref == 0.0) HALFETI_USER_ERROR("metrics: a relative error at t = " << t << " s, where the reference is 0");
+    if (ref == 0.0)
+      HALFETI_USER_ERROR("metrics: a relative error at t = " << t << " s, where the reference is 0");
     return (r - ref) * (r - ref) / (ref * ref);
   }));
 }
@@ -96,7 +99,8 @@ double crossing_frequency(const Curve& c, const Window& w, double level) {
 }
 
 const std::vector<std::string>& metric_names() {
-  static const std::vector<std::string> names = {"rms", "rms_relative", "peak", "peak_abs", "peak_time", "frequency", "mean"};
+  static const std::vector<std::string> names = {"rms",       "rms_relative", "peak", "peak_abs",
+                                                 "peak_time", "frequency",    "mean"};
   return names;
 }
 
@@ -111,7 +115,8 @@ bool metric_needs_reference(const std::string& name) {
 }
 
 double metric(const std::string& name, const Curve& run, const Curve* reference, const Window& w) {
-  if (metric_needs_reference(name) && !reference) HALFETI_USER_ERROR("metrics: '" << name << "' needs a reference curve");
+  if (metric_needs_reference(name) && !reference)
+    HALFETI_USER_ERROR("metrics: '" << name << "' needs a reference curve");
   const auto of = [&](const Curve& c) {
     if (name == "peak") return peak(c, w).value;
     if (name == "peak_abs") return peak(c, w, true).value;
@@ -152,13 +157,17 @@ Curve read_reference(const std::string& path, const std::string& time_column, co
       if (value_column.empty() && header.size() > 1) vi = 1;
       std::string names;
       for (const auto& h : header) names += (names.empty() ? "" : ", ") + h;
-      if (ti < 0) HALFETI_USER_ERROR(path << ": no column '" << time_column << "' (columns: " << names << ")");
-      if (vi < 0) HALFETI_USER_ERROR(path << ": no column '" << value_column << "' (columns: " << names << ")");
+      if (ti < 0)
+        HALFETI_USER_ERROR(path << ": no column '" << time_column << "' (columns: " << names << ")");
+      if (vi < 0)
+        HALFETI_USER_ERROR(path << ": no column '" << value_column << "' (columns: " << names << ")");
       continue;
     }
     const std::size_t need = static_cast<std::size_t>(std::max(ti, vi));
     char* end = nullptr;
-    if (fields.size() <= need) HALFETI_USER_ERROR(path << ":" << line_no << ": " << fields.size() << " fields, the columns need " << need + 1);
+    if (fields.size() <= need)
+      HALFETI_USER_ERROR(path << ":" << line_no << ": " << fields.size() << " fields, the columns need "
+                              << need + 1);
     const double t = std::strtod(fields[static_cast<std::size_t>(ti)].c_str(), &end);
     const bool t_ok = end && *end == '\0' && !fields[static_cast<std::size_t>(ti)].empty();
     const double v = std::strtod(fields[static_cast<std::size_t>(vi)].c_str(), &end);

@@ -15,7 +15,8 @@ ProbeWriter::ProbeWriter(const std::string& path, const std::vector<std::string>
                          const std::vector<std::string>& carried_rows)
     : path_(path), names_(names) {
   for (const auto& n : names)
-    HALFETI_CHECK(n.find(',') == std::string::npos && n != "t", "probe name '" << n << "' cannot be a CSV column");
+    HALFETI_CHECK(n.find(',') == std::string::npos && n != "t",
+                  "probe name '" << n << "' cannot be a CSV column");
   if (!writer) return;
   file_ = std::fopen(path.c_str(), "w");
   if (!file_) HALFETI_IO_ERROR("cannot write probes to '" << path << "': " << std::strerror(errno));
@@ -47,8 +48,8 @@ ProbeWriter::~ProbeWriter() {
 }
 
 void ProbeWriter::write(double t, const std::vector<double>& values) {
-  HALFETI_CHECK(values.size() == names_.size(), "probe row has " << values.size() << " values for "
-                                                                 << names_.size() << " columns");
+  HALFETI_CHECK(values.size() == names_.size(),
+                "probe row has " << values.size() << " values for " << names_.size() << " columns");
   if (!file_) return;
   std::fprintf(file_, "%.9g", t);
   for (double v : values) std::fprintf(file_, ",%.9g", v);
@@ -58,7 +59,8 @@ void ProbeWriter::write(double t, const std::vector<double>& values) {
 
 std::string probe_columns_json(const std::vector<std::string>& names, const std::vector<std::string>& units,
                                const std::vector<std::string>& kinds) {
-  HALFETI_CHECK(names.size() == units.size() && names.size() == kinds.size(), "probe columns without units or kinds");
+  HALFETI_CHECK(names.size() == units.size() && names.size() == kinds.size(),
+                "probe columns without units or kinds");
   Json columns = Json::array();
   columns.push(Json::object().set("name", "t").set("unit", "s").set("kind", "time"));
   for (std::size_t k = 0; k < names.size(); ++k)
@@ -87,7 +89,8 @@ ProbeTable read_probe_csv(const std::string& path) {
     std::stringstream ls(line);
     std::vector<double> row;
     for (std::string c; std::getline(ls, c, ',');) row.push_back(std::stod(c));
-    if (row.size() != t.names.size()) HALFETI_USER_ERROR("probe file '" << path << "': ragged row '" << line << "'");
+    if (row.size() != t.names.size())
+      HALFETI_USER_ERROR("probe file '" << path << "': ragged row '" << line << "'");
     t.rows.push_back(std::move(row));
   }
   return t;

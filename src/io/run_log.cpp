@@ -77,8 +77,7 @@ void make_directories(const std::string& path) {
     if (::mkdir(partial.c_str(), 0755) != 0 && errno != EEXIST)
       HALFETI_USER_ERROR("cannot create directory '" << partial << "': " << std::strerror(errno));
   }
-  if (!is_directory(path))
-    HALFETI_USER_ERROR("'" << path << "' exists and is not a directory");
+  if (!is_directory(path)) HALFETI_USER_ERROR("'" << path << "' exists and is not a directory");
 }
 
 }  // namespace halfeti::io

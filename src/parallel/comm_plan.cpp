@@ -9,10 +9,10 @@
 namespace halfeti::parallel {
 
 namespace {
-// Tags of the plan's point-to-point messages. The discovery's alternate between successive rounds, so that a rank
-// still in round k (its barrier done but not yet tested) cannot take a faster rank's round k + 1 count as its own;
-// every rank calls discover() in the same order, so the round counter agrees. Counts and data name their source,
-// and MPI keeps messages of one source and tag in order.
+// Tags of the plan's point-to-point messages. The discovery's alternate between successive rounds, so that a
+// rank still in round k (its barrier done but not yet tested) cannot take a faster rank's round k + 1 count
+// as its own; every rank calls discover() in the same order, so the round counter agrees. Counts and data
+// name their source, and MPI keeps messages of one source and tag in order.
 constexpr int kTagCounts = 7101, kTagDiscover = 7102, kTagData = 7104;
 int discover_round = 0;
 
@@ -65,8 +65,8 @@ void CommPlan::finish_layout(int keep) {
   lay(recv_from_, keep_recv_offset_, recv_total_);
 }
 
-CommPlan CommPlan::with_peers(MPI_Comm comm, std::vector<int> peers, const std::vector<int>& send_counts, int keep,
-                              Traffic* traffic) {
+CommPlan CommPlan::with_peers(MPI_Comm comm, std::vector<int> peers, const std::vector<int>& send_counts,
+                              int keep, Traffic* traffic) {
   HALFETI_CHECK(peers.size() == send_counts.size(), "one send count per peer");
   CommPlan p;
   p.comm_ = comm;
@@ -75,7 +75,8 @@ CommPlan CommPlan::with_peers(MPI_Comm comm, std::vector<int> peers, const std::
   const std::size_t n = peers.size();
   std::vector<std::size_t> by_rank(n);
   std::iota(by_rank.begin(), by_rank.end(), std::size_t{0});
-  std::sort(by_rank.begin(), by_rank.end(), [&](std::size_t a, std::size_t b) { return peers[a] < peers[b]; });
+  std::sort(by_rank.begin(), by_rank.end(),
+            [&](std::size_t a, std::size_t b) { return peers[a] < peers[b]; });
   std::vector<int> recv_counts(n, 0);
   std::vector<MPI_Request> req(2 * n);
   for (std::size_t k = 0; k < n; ++k) {
@@ -85,7 +86,8 @@ CommPlan CommPlan::with_peers(MPI_Comm comm, std::vector<int> peers, const std::
   }
   const double t0 = MPI_Wtime();
   MPI_Waitall(static_cast<int>(req.size()), req.data(), MPI_STATUSES_IGNORE);
-  add_traffic(traffic, static_cast<std::int64_t>(n), static_cast<std::int64_t>(n * sizeof(int)), MPI_Wtime() - t0);
+  add_traffic(traffic, static_cast<std::int64_t>(n), static_cast<std::int64_t>(n * sizeof(int)),
+              MPI_Wtime() - t0);
   for (std::size_t k : by_rank) {
     if (send_counts[k] > 0) p.send_to_.push_back({peers[k], send_counts[k], 0});
     if (recv_counts[k] > 0) p.recv_from_.push_back({peers[k], recv_counts[k], 0});
@@ -135,9 +137,10 @@ CommPlan CommPlan::discover(MPI_Comm comm, const std::vector<int>& send_counts, 
       }
     }
   }
-  add_traffic(traffic, static_cast<std::int64_t>(sends.size()), static_cast<std::int64_t>(sends.size() * sizeof(int)),
-              MPI_Wtime() - t0);
-  std::sort(p.recv_from_.begin(), p.recv_from_.end(), [](const Link& a, const Link& b) { return a.rank < b.rank; });
+  add_traffic(traffic, static_cast<std::int64_t>(sends.size()),
+              static_cast<std::int64_t>(sends.size() * sizeof(int)), MPI_Wtime() - t0);
+  std::sort(p.recv_from_.begin(), p.recv_from_.end(),
+            [](const Link& a, const Link& b) { return a.rank < b.rank; });
   p.finish_layout(send_counts[p.rank_]);
   return p;
 }

@@ -4,23 +4,24 @@
 
 namespace halfeti::parallel {
 
-HaloPlan::HaloPlan(MPI_Comm comm, const CellGrid& grid, const std::vector<int>& owner, const std::vector<int>& cells)
+HaloPlan::HaloPlan(MPI_Comm comm, const CellGrid& grid, const std::vector<int>& owner,
+                   const std::vector<int>& cells)
     : HaloPlan(comm, grid, owner, cells, [&] {
         int rank = 0;
         MPI_Comm_rank(comm, &rank);
         return neighbour_ranks(grid.nx, grid.ny, owner, rank);
       }()) {}
 
-HaloPlan::HaloPlan(MPI_Comm comm, const CellGrid& grid, const std::vector<int>& owner, const std::vector<int>& cells,
-                   const std::vector<int>& peers, Traffic* traffic) {
+HaloPlan::HaloPlan(MPI_Comm comm, const CellGrid& grid, const std::vector<int>& owner,
+                   const std::vector<int>& cells, const std::vector<int>& peers, Traffic* traffic) {
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
   if (size == 1) return;
   single_ = false;
 
-  // Ranks that see each cell's particles as ghosts: the owners of the 8 surrounding cells, except the cell's own
-  // (each one of `peers`). Computed per occupied cell once, then applied to its particles.
+  // Ranks that see each cell's particles as ghosts: the owners of the 8 surrounding cells, except the cell's
+  // own (each one of `peers`). Computed per occupied cell once, then applied to its particles.
   std::vector<std::vector<int>> per_peer(peers.size());
   int last_cell = -1;
   int targets[8];
@@ -57,7 +58,8 @@ void HaloPlan::update(std::vector<double>& field, std::size_t owned, int ncomp) 
   if (single_) return;
   std::vector<double> buf(send_ids_.size() * ncomp);
   for (std::size_t k = 0; k < send_ids_.size(); ++k)
-    for (int c = 0; c < ncomp; ++c) buf[k * ncomp + c] = field[static_cast<std::size_t>(send_ids_[k]) * ncomp + c];
+    for (int c = 0; c < ncomp; ++c)
+      buf[k * ncomp + c] = field[static_cast<std::size_t>(send_ids_[k]) * ncomp + c];
   plan_.exchange(buf.data(), field.data() + owned * ncomp, ncomp, MPI_DOUBLE);
 }
 

@@ -22,7 +22,8 @@ ParticleMigration::ParticleMigration(MPI_Comm comm, const std::vector<int>& dest
 void ParticleMigration::apply(std::vector<double>& field, int ncomp) const {
   std::vector<double> buf(order_.size() * ncomp), out(new_count() * ncomp);
   for (std::size_t k = 0; k < order_.size(); ++k)
-    for (int c = 0; c < ncomp; ++c) buf[k * ncomp + c] = field[static_cast<std::size_t>(order_[k]) * ncomp + c];
+    for (int c = 0; c < ncomp; ++c)
+      buf[k * ncomp + c] = field[static_cast<std::size_t>(order_[k]) * ncomp + c];
   plan_.exchange(buf.data(), out.data(), ncomp, MPI_DOUBLE);
   field.swap(out);
 }

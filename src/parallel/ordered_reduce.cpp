@@ -40,8 +40,8 @@ void gather_to_root(MPI_Comm comm, const std::vector<std::int64_t>& gids, const 
   all_values.resize(static_cast<std::size_t>(total) * ncomp);
   for (int k = 0; k < total; ++k) {
     all_gids[k] = g[perm[k]];
-    for (int c = 0; c < ncomp; ++c) all_values[static_cast<std::size_t>(k) * ncomp + c] =
-        v[static_cast<std::size_t>(perm[k]) * ncomp + c];
+    for (int c = 0; c < ncomp; ++c)
+      all_values[static_cast<std::size_t>(k) * ncomp + c] = v[static_cast<std::size_t>(perm[k]) * ncomp + c];
   }
 }
 }  // namespace

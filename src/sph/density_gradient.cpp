@@ -1,7 +1,7 @@
 // Renormalised density gradient (eqs. 6-7).
-#include "halfeti/sph/delta_sph.hpp"
-
 #include <cmath>
+
+#include "halfeti/sph/delta_sph.hpp"
 
 namespace halfeti::sph {
 

@@ -40,10 +40,10 @@ double resolved_sound_speed(const FluidParams& p) {
   double depth = 0.0;
   for (const auto& b : p.water) depth = std::max(depth, b.y1 + std::abs(b.surface_amplitude) - b.y0);
   HALFETI_CHECK(depth > 0.0, "no water to size the sound speed on");
-  // eq. 10 with u_b = sqrt(g d) (long-wave speed), F = g + peak ground acceleration, l = d, aiming at half the
-  // allowed density variation so that the hydrostatic state alone stays clear of the 1% monitor.
-  return sound_speed_eq10(std::sqrt(p.gravity * depth), p.gravity + std::abs(p.peak_ground_acceleration), depth,
-                          0.5 * p.max_density_variation);
+  // eq. 10 with u_b = sqrt(g d) (long-wave speed), F = g + peak ground acceleration, l = d, aiming at half
+  // the allowed density variation so that the hydrostatic state alone stays clear of the 1% monitor.
+  return sound_speed_eq10(std::sqrt(p.gravity * depth), p.gravity + std::abs(p.peak_ground_acceleration),
+                          depth, 0.5 * p.max_density_variation);
 }
 
 Fluid::Fluid(MPI_Comm comm, const FluidParams& params, const excitation::GroundMotion* motion)
@@ -107,8 +107,8 @@ void Fluid::initialise_particles() {
         const double px = b.x0 + (i + 0.5) * dx_, py = b.y0 + (j + 0.5) * dx_;
         const double surface = b.y1 + b.surface_amplitude * std::cos(M_PI * px / params_.tank_length);
         if (py >= surface || near_internal_wall(px, py) || excluded(px, py)) continue;
-        // Hydrostatic initial state: p = rho0 g (surface - y), density from eq. 9; each particle stands for a dx^2
-        // cell of water at its density.
+        // Hydrostatic initial state: p = rho0 g (surface - y), density from eq. 9; each particle stands for a
+        // dx^2 cell of water at its density.
         const double rho = density_from_pressure(rho0 * g * (surface - py), rho0, c0_);
         all.gid.push_back(next++);
         all.x.push_back(px);
@@ -150,7 +150,9 @@ void Fluid::sort_owned_by_cell() {
   for (int i = 0; i < n_owned_; ++i) cell_[i] = grid_.cell_of(x_[i], y_[i]);
   std::vector<int> perm(n_owned_);
   std::iota(perm.begin(), perm.end(), 0);
-  const auto before = [&](int a, int b) { return cell_[a] != cell_[b] ? cell_[a] < cell_[b] : gid_[a] < gid_[b]; };
+  const auto before = [&](int a, int b) {
+    return cell_[a] != cell_[b] ? cell_[a] < cell_[b] : gid_[a] < gid_[b];
+  };
   if (std::is_sorted(perm.begin(), perm.end(), before)) return;  // most steps: nobody changed cell
   std::sort(perm.begin(), perm.end(), before);
   permute(gid_, perm);
@@ -170,7 +172,12 @@ void Fluid::exchange_halo() {
   std::vector<double> state(static_cast<std::size_t>(n_owned_) * kFields);
   for (int i = 0; i < n_owned_; ++i) {
     double* s = &state[static_cast<std::size_t>(i) * kFields];
-    s[0] = x_[i]; s[1] = y_[i]; s[2] = vx_[i]; s[3] = vy_[i]; s[4] = rho_[i]; s[5] = mass_[i];
+    s[0] = x_[i];
+    s[1] = y_[i];
+    s[2] = vx_[i];
+    s[3] = vy_[i];
+    s[4] = rho_[i];
+    s[5] = mass_[i];
   }
   plan.update(state, n_owned_, kFields);
   plan.update(gid_, n_owned_);
@@ -178,7 +185,12 @@ void Fluid::exchange_halo() {
   for (auto* v : {&x_, &y_, &vx_, &vy_, &rho_, &mass_}) v->resize(n_local_);
   for (int i = n_owned_; i < n_local_; ++i) {
     const double* s = &state[static_cast<std::size_t>(i) * kFields];
-    x_[i] = s[0]; y_[i] = s[1]; vx_[i] = s[2]; vy_[i] = s[3]; rho_[i] = s[4]; mass_[i] = s[5];
+    x_[i] = s[0];
+    y_[i] = s[1];
+    vx_[i] = s[2];
+    vy_[i] = s[3];
+    rho_[i] = s[4];
+    mass_[i] = s[5];
   }
   halo_plan_ = plan;
 }
@@ -200,16 +212,18 @@ void Fluid::compute_forces() {
     search_.fixed_pairs(0, x_.data(), y_.data(), n_owned_, wall_pairs_);
     search_.fixed_pairs(1, x_.data(), y_.data(), n_owned_, ghost_pairs_);
   }
-  const ParticleView pv{x_.data(), y_.data(), vx_.data(), vy_.data(), rho_.data(), mass_.data(), p_.data(),
-                        volume_.data(), n_owned_, n_local_};
+  const ParticleView pv{x_.data(),    y_.data(), vx_.data(),     vy_.data(), rho_.data(),
+                        mass_.data(), p_.data(), volume_.data(), n_owned_,   n_local_};
   const bool use_delta = params_.scheme == Scheme::kDeltaSph && params_.delta > 0.0;
   // The wall ghosts' pressure is continued along the walls with the owned particles' gradient (eqs. 6, 9), so
   // the standard scheme needs the gradient pass too (without its halo update: only owned particles read it).
   const bool wall_taylor = params_.wall_pressure && params_.wall_ghost_pressure == WallGhostPressure::kTaylor;
   {
     ScopedTimer t(timers_, "density_gradient");
-    if (use_delta || wall_taylor) density_gradient(pv, pairs_, grad_rho_);
-    else grad_rho_.clear();
+    if (use_delta || wall_taylor)
+      density_gradient(pv, pairs_, grad_rho_);
+    else
+      grad_rho_.clear();
     if (use_delta) halo_plan_.update(grad_rho_, n_owned_, 2);
   }
   {
@@ -234,12 +248,13 @@ void Fluid::compute_forces() {
     k.body_x = -ag;  // the tank frame: every mass feels -a_g(t)
     k.body_y = -params_.gravity;
     static const std::vector<double> kNoGradient;
-    momentum_rates(pv, pairs_, wall_pairs_, walls_, ghost_pairs_, ghosts_, wall_taylor ? grad_rho_ : kNoGradient, k,
-                   rates_);
-    if (params_.wall_friction == WallFriction::kLogLaw)  // the walls' shear on the first layer (wall_friction.hpp)
+    momentum_rates(pv, pairs_, wall_pairs_, walls_, ghost_pairs_, ghosts_,
+                   wall_taylor ? grad_rho_ : kNoGradient, k, rates_);
+    if (params_.wall_friction ==
+        WallFriction::kLogLaw)  // the walls' shear on the first layer (wall_friction.hpp)
       add_wall_friction(x_.data(), y_.data(), vx_.data(), vy_.data(), n_owned_,
-                        {params_.tank_length, params_.tank_height, params_.lid}, dx_, params_.kinematic_viscosity,
-                        rates_.ax.data(), rates_.ay.data());
+                        {params_.tank_length, params_.tank_height, params_.lid}, dx_,
+                        params_.kinematic_viscosity, rates_.ax.data(), rates_.ay.data());
     if (!plate_wall_.empty()) {  // the plate's surface as a moving wall (plate_wall.hpp)
       plate_wall_.find_pairs(x_.data(), y_.data(), n_owned_, kernel_);
       const PlateWallConstants pk{dx_, kernel_.h, k.rho0, c0_, k.alpha, k.body_x, k.body_y};
@@ -248,10 +263,12 @@ void Fluid::compute_forces() {
     }
     if (!plate_wall_.empty() || params_.wall_friction != WallFriction::kNone) {
       double a2 = rates_.max_accel * rates_.max_accel;
-      for (int i = 0; i < n_owned_; ++i) a2 = std::max(a2, rates_.ax[i] * rates_.ax[i] + rates_.ay[i] * rates_.ay[i]);
+      for (int i = 0; i < n_owned_; ++i)
+        a2 = std::max(a2, rates_.ax[i] * rates_.ax[i] + rates_.ay[i] * rates_.ay[i]);
       rates_.max_accel = std::sqrt(a2);
     }
-    // Time step: CFL on sound and viscous signal speed and the force limit (Monaghan 1989 style); max is exact.
+    // Time step: CFL on sound and viscous signal speed and the force limit (Monaghan 1989 style); max is
+    // exact.
     double m[2] = {rates_.max_mu, rates_.max_accel};
     MPI_Allreduce(MPI_IN_PLACE, m, 2, MPI_DOUBLE, MPI_MAX, comm_.get());
     double dt = params_.cfl * kernel_.h / (c0_ + m[0]);
@@ -291,8 +308,8 @@ void Fluid::predict(PlateDensity plate) {
   }
   {
     ScopedTimer t(timers_, "forces");
-    const ParticleView pv{x_.data(), y_.data(), vx_.data(), vy_.data(), rho_.data(), mass_.data(), p_.data(),
-                          volume_.data(), n_owned_, n_local_};
+    const ParticleView pv{x_.data(),    y_.data(), vx_.data(),     vy_.data(), rho_.data(),
+                          mass_.data(), p_.data(), volume_.data(), n_owned_,   n_local_};
     continuity_rates(pv, pairs_, ghost_pairs_, ghosts_, grad_rho_, constants_, rates_);
     if (!plate_wall_.empty() && !density_pending_)
       plate_wall_.continuity(vx_.data(), vy_.data(), rho_.data(), rates_.drho.data());
@@ -315,7 +332,8 @@ void Fluid::predict(PlateDensity plate) {
 }
 
 void Fluid::update_density(const PlateOutline& motion) {
-  HALFETI_CHECK(predicted_ && density_pending_, "Fluid::update_density() follows predict(PlateDensity::kDeferred)");
+  HALFETI_CHECK(predicted_ && density_pending_,
+                "Fluid::update_density() follows predict(PlateDensity::kDeferred)");
   density_pending_ = false;
   ScopedTimer t(timers_, "integrate");
   if (!plate_wall_.empty()) {
@@ -326,9 +344,11 @@ void Fluid::update_density(const PlateOutline& motion) {
 }
 
 void Fluid::snapshot(Snapshot& into) const {
-#define HALFETI_FLUID_SAVE(m) \
-  if (into.m) *into.m = m; /* the buffer's capacity reused */ \
-  else into.m.emplace(m);
+#define HALFETI_FLUID_SAVE(m)                       \
+  if (into.m)                                       \
+    *into.m = m; /* the buffer's capacity reused */ \
+  else                                              \
+    into.m.emplace(m);
   HALFETI_FLUID_STEP_STATE(HALFETI_FLUID_SAVE)
 #undef HALFETI_FLUID_SAVE
 }
@@ -345,14 +365,15 @@ void Fluid::apply_corrections(const std::vector<int>& touched, const double* dx,
   HALFETI_CHECK(predicted_ && !density_pending_,
                 "Fluid::apply_corrections() belongs between predict() (and update_density()) and finish()");
   ScopedTimer t(timers_, "integrate");
-  // The tank's walls bound a correction. The contact solve knows only the plate, and at the plate's foot the face's
-  // normal tilts towards the floor as the plate bends (and under a hanging gate's free end it points at the floor):
-  // a particle pushed out of the plate there would be pushed into the floor. So a correction may not bring a
-  // particle closer to a wall than the nearer of its predicted distance and the wall repulsion's range (dx/2), and
-  // a particle that ends within one spacing of a wall keeps no velocity correction into it: the rigid wall takes
-  // that part of the contact's impulse. (With `velocity_update: acceleration` the particle would otherwise carry
-  // the relocation's speed, up to dx/dt, into the floor within a step or two: the Antoci gate at dx 2 mm lost a
-  // particle through the floor under its free end at 0.037 s so; holding only those within dx/2 did not help.)
+  // The tank's walls bound a correction. The contact solve knows only the plate, and at the plate's foot the
+  // face's normal tilts towards the floor as the plate bends (and under a hanging gate's free end it points
+  // at the floor): a particle pushed out of the plate there would be pushed into the floor. So a correction
+  // may not bring a particle closer to a wall than the nearer of its predicted distance and the wall
+  // repulsion's range (dx/2), and a particle that ends within one spacing of a wall keeps no velocity
+  // correction into it: the rigid wall takes that part of the contact's impulse. (With `velocity_update:
+  // acceleration` the particle would otherwise carry the relocation's speed, up to dx/dt, into the floor
+  // within a step or two: the Antoci gate at dx 2 mm lost a particle through the floor under its free end at
+  // 0.037 s so; holding only those within dx/2 did not help.)
   const double keep = 0.5 * dx_, L = params_.tank_length;
   for (int i : touched) {
     HALFETI_DEBUG_CHECK(i >= 0 && i < n_owned_, "correction for particle " << i << " of " << n_owned_);
@@ -373,7 +394,8 @@ void Fluid::apply_corrections(const std::vector<int>& touched, const double* dx,
 }
 
 void Fluid::finish() {
-  HALFETI_CHECK(predicted_ && !density_pending_, "Fluid::finish() needs predict() (and update_density()) first");
+  HALFETI_CHECK(predicted_ && !density_pending_,
+                "Fluid::finish() needs predict() (and update_density()) first");
   predicted_ = false;
   {
     ScopedTimer t(timers_, "health");
@@ -409,7 +431,8 @@ std::vector<long> Fluid::global_cell_counts() const {
 void Fluid::maybe_rebalance() {
   if (size_ == 1 || params_.rebalance_interval <= 0 || step_ % params_.rebalance_interval != 0) return;
   const auto counts = global_cell_counts();
-  if (parallel::imbalance(owner_, counts, size_, params_.first_rank_share) <= params_.rebalance_threshold) return;
+  if (parallel::imbalance(owner_, counts, size_, params_.first_rank_share) <= params_.rebalance_threshold)
+    return;
   owner_ = parallel::partition_cells_collective(comm_.get(), grid_, counts, params_.first_rank_share);
   peers_ = parallel::neighbour_ranks(grid_.nx, grid_.ny, owner_, rank_);
 }
@@ -442,8 +465,8 @@ Fluid::State Fluid::state() const {
 void Fluid::restore(State all) {
   const ParticleArrays& p = all.particles;
   const std::size_t n = p.gid.size();
-  HALFETI_CHECK(p.x.size() == n && p.y.size() == n && p.vx.size() == n && p.vy.size() == n && p.rho.size() == n &&
-                    p.mass.size() == n,
+  HALFETI_CHECK(p.x.size() == n && p.y.size() == n && p.vx.size() == n && p.vy.size() == n &&
+                    p.rho.size() == n && p.mass.size() == n,
                 "Fluid::restore: particle arrays of unequal length");
   for (std::size_t k = 0; k < n; ++k)
     if (!std::isfinite(p.x[k]) || !std::isfinite(p.y[k]))

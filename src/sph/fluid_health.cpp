@@ -26,7 +26,8 @@ std::string point(double x, double y) {
 void Fluid::warn(const std::string& kind, bool active, bool cleared, const std::string& message, double value,
                  double x, double y) {
   // One event when a condition starts; re-armed only once it has clearly gone (hysteresis), so a measure that
-  // hovers at its threshold does not flood the list. While it holds, the episode keeps its worst value and place.
+  // hovers at its threshold does not flood the list. While it holds, the episode keeps its worst value and
+  // place.
   auto it = std::find(active_warnings_.begin(), active_warnings_.end(), kind);
   if (active && it == active_warnings_.end()) {
     active_warnings_.push_back(kind);
@@ -34,11 +35,13 @@ void Fluid::warn(const std::string& kind, bool active, bool cleared, const std::
   } else if (cleared && it != active_warnings_.end()) {
     active_warnings_.erase(it);
   }
-  if (HealthEvent* open = active ? open_warning(kind) : nullptr) health_observe(*open, value, time_, step_, x, y);
+  if (HealthEvent* open = active ? open_warning(kind) : nullptr)
+    health_observe(*open, value, time_, step_, x, y);
 }
 
 HealthEvent* Fluid::open_warning(const std::string& kind) {
-  if (std::find(active_warnings_.begin(), active_warnings_.end(), kind) == active_warnings_.end()) return nullptr;
+  if (std::find(active_warnings_.begin(), active_warnings_.end(), kind) == active_warnings_.end())
+    return nullptr;
   for (auto e = events_.rbegin(); e != events_.rend(); ++e)
     if (e->kind == kind && !e->fatal) return &*e;
   return nullptr;
@@ -50,8 +53,9 @@ void Fluid::fatal(const std::string& kind, const std::string& message) {
 }
 
 void Fluid::remove_spilled() {
-  // The tank is open at the top: water thrown over it leaves the run, as it would leave the real tank. Removed in
-  // place (owned particles are compacted before migration), counted, and reported once per episode.
+  // The tank is open at the top: water thrown over it leaves the run, as it would leave the real tank.
+  // Removed in place (owned particles are compacted before migration), counted, and reported once per
+  // episode.
   const double H = params_.tank_height;
   long removed = 0, key = std::numeric_limits<long>::max();
   double mass = 0.0, first_x = 0.0, first_y = 0.0;
@@ -83,14 +87,15 @@ void Fluid::remove_spilled() {
   spilled_mass_ += sums[1];
   std::ostringstream os;
   if (sums[0] > 0)
-    os << where(time_, step_) << static_cast<long>(sums[0]) << " particle(s) left over the tank's open top (first: "
-       << first << "); removed, " << spilled_mass_ << " kg/m spilled so far";
+    os << where(time_, step_) << static_cast<long>(sums[0])
+       << " particle(s) left over the tank's open top (first: " << first << "); removed, " << spilled_mass_
+       << " kg/m spilled so far";
   // Worst: the water spilled so far [kg/m]; place: where the first particle over the top (lowest id) was.
   double place[2] = {first_x, first_y};
   if (sums[0] > 0) MPI_Bcast(place, 2, MPI_DOUBLE, first_rank(comm_.get(), removed > 0, key), comm_.get());
-  // One episode while water keeps leaving: it ends after 0.05 s without a spill (a sloshing wave throws its crest
-  // over the top particle by particle, over a few steps each).
-  constexpr double kQuiet = 0.05;  // [s]
+  // One episode while water keeps leaving: it ends after 0.05 s without a spill (a sloshing wave throws its
+  // crest over the top particle by particle, over a few steps each).
+  constexpr double kQuiet = 0.05;                     // [s]
   const HealthEvent* open = open_warning("spilled");  // before warn() opens or closes one
   const bool quiet = sums[0] == 0 && (!open || time_ - open->worst_time > kQuiet);
   warn("spilled", sums[0] > 0, quiet, os.str(), spilled_mass_, place[0], place[1]);
@@ -105,9 +110,12 @@ void Fluid::check_health() {
   const double L = params_.tank_length, H = params_.tank_height;
   for (int i = 0; i < n_owned_; ++i) {
     const char* bad = nullptr;
-    if (!std::isfinite(x_[i]) || !std::isfinite(y_[i])) bad = "position";
-    else if (!std::isfinite(vx_[i]) || !std::isfinite(vy_[i])) bad = "velocity";
-    else if (!std::isfinite(rho_[i])) bad = "density";
+    if (!std::isfinite(x_[i]) || !std::isfinite(y_[i]))
+      bad = "position";
+    else if (!std::isfinite(vx_[i]) || !std::isfinite(vy_[i]))
+      bad = "velocity";
+    else if (!std::isfinite(rho_[i]))
+      bad = "density";
     std::string m, k;
     if (bad) {
       k = "nan";
@@ -189,13 +197,13 @@ void Fluid::check_health() {
     const int root = first_rank(comm_.get(), i >= 0, 0);
     MPI_Bcast(place, 2, MPI_DOUBLE, root < 0 ? 0 : root, comm_.get());
   }
-  warn("spacing_collapse", collapsed, dmin > 1.5 * params_.spacing_collapse_fraction * dx_, os.str(), dmin / dx_,
-       place[0], place[1]);
+  warn("spacing_collapse", collapsed, dmin > 1.5 * params_.spacing_collapse_fraction * dx_, os.str(),
+       dmin / dx_, place[0], place[1]);
 }
 
 int Fluid::closest_pair_particle(double dmin) const {
-  // The owned particle with a neighbour at dmin (the search's own minimum, so an exact match exists on the rank
-  // that found it; -1 elsewhere). The pair list holds the offsets at the search.
+  // The owned particle with a neighbour at dmin (the search's own minimum, so an exact match exists on the
+  // rank that found it; -1 elsewhere). The pair list holds the offsets at the search.
   const double r2 = dmin * dmin;
   if (pairs_.start.size() != static_cast<std::size_t>(n_owned_) + 1) return -1;  // particles spilled since
   for (int i = 0; i < n_owned_; ++i)

@@ -17,8 +17,8 @@ double point_segment_distance2(double px, double py, const Barrier& b) {
 
 // Counting sort of items by cell; inside a cell, by key (global id / wall index).
 template <class Key>
-void bin(const parallel::CellGrid& g, const double* x, const double* y, int n, Key key, std::vector<int>& start,
-         std::vector<int>& items, std::vector<int>& cell_of) {
+void bin(const parallel::CellGrid& g, const double* x, const double* y, int n, Key key,
+         std::vector<int>& start, std::vector<int>& items, std::vector<int>& cell_of) {
   const int nc = g.cell_count();
   start.assign(nc + 1, 0);
   cell_of.resize(n);
@@ -30,8 +30,8 @@ void bin(const parallel::CellGrid& g, const double* x, const double* y, int n, K
   items.resize(n);
   std::vector<int> fill(start.begin(), start.end() - 1);
   for (int i = 0; i < n; ++i) items[fill[cell_of[i]]++] = i;
-  // Usually already in key order (owned particles are kept sorted by cell and id, and a cell's ghosts all come
-  // from its one owner in that order), so the sort rarely runs.
+  // Usually already in key order (owned particles are kept sorted by cell and id, and a cell's ghosts all
+  // come from its one owner in that order), so the sort rarely runs.
   for (int c = 0; c < nc; ++c) {
     auto b = items.begin() + start[c], e = items.begin() + start[c + 1];
     const auto less = [&](int a, int bb) { return key(a) < key(bb); };
@@ -48,13 +48,15 @@ void NeighbourSearch::set_fixed_points(int set, const std::vector<double>& px, c
   b.x = px;
   b.y = py;
   std::vector<int> cells;
-  bin(grid_, b.x.data(), b.y.data(), static_cast<int>(b.x.size()), [](int i) { return i; }, b.start, b.items,
+  bin(
+      grid_, b.x.data(), b.y.data(), static_cast<int>(b.x.size()), [](int i) { return i; }, b.start, b.items,
       cells);
   b.near.assign(grid_.cell_count(), 0);
   for (int c : cells) {
     const int cx = c % grid_.nx, cy = c / grid_.nx;
     for (int jy = std::max(cy - 1, 0); jy <= std::min(cy + 1, grid_.ny - 1); ++jy)
-      for (int jx = std::max(cx - 1, 0); jx <= std::min(cx + 1, grid_.nx - 1); ++jx) b.near[jy * grid_.nx + jx] = 1;
+      for (int jx = std::max(cx - 1, 0); jx <= std::min(cx + 1, grid_.nx - 1); ++jx)
+        b.near[jy * grid_.nx + jx] = 1;
   }
 }
 
@@ -78,7 +80,8 @@ void NeighbourSearch::set_barriers(std::vector<Barrier> barriers) {
     for_cells(barriers_[k], [&](int c) { barrier_items_[fill[c]++] = k; });
 }
 
-bool NeighbourSearch::crosses_any(const std::vector<int>& which, double xi, double yi, double xj, double yj) const {
+bool NeighbourSearch::crosses_any(const std::vector<int>& which, double xi, double yi, double xj,
+                                  double yj) const {
   for (int k : which) {
     const Barrier& b = barriers_[k];
     if (segments_cross(xi, yi, xj, yj, b.xa, b.ya, b.xb, b.yb)) return true;
@@ -97,7 +100,8 @@ bool NeighbourSearch::crosses_barrier(double xi, double yi, double xj, double yj
 
 void NeighbourSearch::fluid_pairs(const double* x, const double* y, const std::int64_t* gid, int n_owned,
                                   int n_local, PairList& out) {
-  bin(grid_, x, y, n_local, [gid](int i) { return gid[i]; }, cell_start_, cell_items_, cell_of_);
+  bin(
+      grid_, x, y, n_local, [gid](int i) { return gid[i]; }, cell_start_, cell_items_, cell_of_);
   // Positions in binned order, so that the three cells of a row are one contiguous range.
   bx_.resize(n_local);
   by_.resize(n_local);
@@ -105,8 +109,8 @@ void NeighbourSearch::fluid_pairs(const double* x, const double* y, const std::i
     bx_[k] = x[cell_items_[k]];
     by_[k] = y[cell_items_[k]];
   }
-  // The pair arrays are sized once for about 24 pairs a particle (or what the last search needed), grown when a
-  // particle needs more and cut to the count at the end.
+  // The pair arrays are sized once for about 24 pairs a particle (or what the last search needed), grown when
+  // a particle needs more and cut to the count at the end.
   out.start.assign(n_owned + 1, 0);
   std::size_t n_pairs = 0, room = std::max(out.j.capacity(), static_cast<std::size_t>(n_owned) * 24);
   out.resize(room);
@@ -116,22 +120,23 @@ void NeighbourSearch::fluid_pairs(const double* x, const double* y, const std::i
   for (int i = 0; i < n_owned; ++i) {
     const int c = cell_of_[i], cx = c % grid_.nx, cy = c / grid_.nx;
     const double xi = x[i], yi = y[i];
-    // Only a barrier within the support of particle i can cross a pair of it (the crossing point lies on the pair,
-    // closer to i than the pair's length): those of its cell's list, found once per particle (most of the tank
-    // has none). The 1e-9 margin keeps every barrier a rounded crossing test could see.
+    // Only a barrier within the support of particle i can cross a pair of it (the crossing point lies on the
+    // pair, closer to i than the pair's length): those of its cell's list, found once per particle (most of
+    // the tank has none). The 1e-9 margin keeps every barrier a rounded crossing test could see.
     near_barriers_.clear();
     if (barriers)
       for (int k = barrier_start_[c]; k < barrier_start_[c + 1]; ++k) {
         const Barrier& b = barriers_[barrier_items_[k]];
-        if (point_segment_distance2(xi, yi, b) < rc2 * (1.0 + 1e-9)) near_barriers_.push_back(barrier_items_[k]);
+        if (point_segment_distance2(xi, yi, b) < rc2 * (1.0 + 1e-9))
+          near_barriers_.push_back(barrier_items_[k]);
       }
     const bool near_barrier = !near_barriers_.empty();
     const int x_lo = std::max(cx - 1, 0), x_hi = std::min(cx + 1, grid_.nx - 1);
     // Global cell order (rows ascending, and within a row the cells ascending), then global id inside a cell.
-    // Three passes: the candidates within the support are kept without a branch on the distance (in a disordered
-    // flow r < 2h is unpredictable, and mispredicted branches cost more than the stores), the kept pairs are
-    // tested against the near barriers, and the kernel is evaluated for the survivors in one vectorised loop. The
-    // order, and so every sum over the pairs, is unchanged.
+    // Three passes: the candidates within the support are kept without a branch on the distance (in a
+    // disordered flow r < 2h is unpredictable, and mispredicted branches cost more than the stores), the kept
+    // pairs are tested against the near barriers, and the kernel is evaluated for the survivors in one
+    // vectorised loop. The order, and so every sum over the pairs, is unchanged.
     int kept = 0;
     for (int jy = std::max(cy - 1, 0); jy <= std::min(cy + 1, grid_.ny - 1); ++jy) {
       const int k_begin = cell_start_[jy * grid_.nx + x_lo], k_end = cell_start_[jy * grid_.nx + x_hi + 1];
@@ -178,7 +183,8 @@ void NeighbourSearch::fluid_pairs(const double* x, const double* y, const std::i
   min_distance_ = std::sqrt(min_r2);
 }
 
-void NeighbourSearch::fixed_pairs(int set, const double* x, const double* y, int n_owned, PairList& out) const {
+void NeighbourSearch::fixed_pairs(int set, const double* x, const double* y, int n_owned,
+                                  PairList& out) const {
   const FixedBins& b = fixed_[set];
   out.clear();
   out.start.assign(n_owned + 1, 0);

@@ -12,9 +12,9 @@ namespace halfeti::sph {
 
 namespace {
 // First-order (MLS) kernel interpolation at a point: with b = (1, x_i - x, y_i - y), solves
-// [sum V W b b^T] c = sum V W b f for f = p, u, v and returns c_0 of each: exact for linear fields even where the
-// kernel is cut by a wall or the surface. Falls back to the Shepard value sum V W f / sum V W when the moment
-// matrix is singular (too few particles). All sums in global-id order.
+// [sum V W b b^T] c = sum V W b f for f = p, u, v and returns c_0 of each: exact for linear fields even where
+// the kernel is cut by a wall or the surface. Falls back to the Shepard value sum V W f / sum V W when the
+// moment matrix is singular (too few particles). All sums in global-id order.
 std::array<double, 3> interpolate(MPI_Comm comm, const Kernel& k, double px, double py, int n,
                                   const std::vector<std::int64_t>& gid, const std::vector<double>& x,
                                   const std::vector<double>& y, const std::vector<double>& vx,
@@ -43,7 +43,8 @@ std::array<double, 3> interpolate(MPI_Comm comm, const Kernel& k, double px, dou
   const double scale = m00 * m11 * m22;
   for (int f = 0; f < 3; ++f) {
     const double b0 = s[6 + 3 * f], b1 = s[7 + 3 * f], b2 = s[8 + 3 * f];
-    out[f] = (scale > 0.0 && std::abs(det) > 1e-3 * scale) ? (c00 * b0 + c01 * b1 + c02 * b2) / det : b0 / m00;
+    out[f] =
+        (scale > 0.0 && std::abs(det) > 1e-3 * scale) ? (c00 * b0 + c01 * b1 + c02 * b2) / det : b0 / m00;
   }
   return out;
 }
@@ -71,11 +72,12 @@ double Fluid::free_surface_elevation(double px) const {
 
 double Fluid::surface_level(double px) const {
   // The bulk's free surface at x, robust to splashes: the water's kernel-interpolated volume fraction
-  // c(y) = sum V_j W(|(x, y) - r_j|) (the tank's walls and floor as mirrors, so that c = 1 in the bulk next to them)
-  // sampled upward from the floor every dx / 8; the level is the first place it falls below 1/2 (linearly
-  // interpolated): a flat surface's, there, is its top particles' centres plus dx / 2, as the elevation probe's.
-  // A jet or spray above the bulk, separated from it by a gap, is not counted. The particles within one support of
-  // the vertical line are gathered on every rank and summed in global-id order (the same value on any ranks).
+  // c(y) = sum V_j W(|(x, y) - r_j|) (the tank's walls and floor as mirrors, so that c = 1 in the bulk next
+  // to them) sampled upward from the floor every dx / 8; the level is the first place it falls below 1/2
+  // (linearly interpolated): a flat surface's, there, is its top particles' centres plus dx / 2, as the
+  // elevation probe's. A jet or spray above the bulk, separated from it by a gap, is not counted. The
+  // particles within one support of the vertical line are gathered on every rank and summed in global-id
+  // order (the same value on any ranks).
   const double rc = kernel_.support(), L = params_.tank_length;
   std::vector<double> mine;  // gid, x, y, volume
   for (int i = 0; i < n_owned_; ++i)
@@ -86,11 +88,13 @@ double Fluid::surface_level(double px) const {
   MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_.get());
   for (int r = 1; r < size_; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
   std::vector<double> all(offsets[size_ - 1] + counts[size_ - 1]);
-  MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, comm_.get());
+  MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE,
+                 comm_.get());
   const std::size_t n = all.size() / 4;
   std::vector<std::size_t> order(n);
   for (std::size_t k = 0; k < n; ++k) order[k] = k;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return all[4 * a] < all[4 * b]; });
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return all[4 * a] < all[4 * b]; });
   // Each particle and its mirrors in the side walls and the floor.
   std::vector<double> sx, sy, sv;
   for (std::size_t k : order) {

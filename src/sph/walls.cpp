@@ -7,7 +7,8 @@ namespace halfeti::sph {
 
 namespace {
 // Particles along a->b at spacing close to `db`, extended by `ext` past both ends. Weight = share of [a, b].
-void add_line(WallParticles& w, double xa, double ya, double xb, double yb, double db, double ext, bool two_sided) {
+void add_line(WallParticles& w, double xa, double ya, double xb, double yb, double db, double ext,
+              bool two_sided) {
   const double len = std::hypot(xb - xa, yb - ya);
   const int n = std::max(1, static_cast<int>(std::lround(len / db)));
   const double s = len / n;
@@ -28,9 +29,9 @@ void add_line(WallParticles& w, double xa, double ya, double xb, double yb, doub
 WallParticles build_walls(const FluidParams& p, double extension) {
   WallParticles w;
   const double db = p.spacing * p.wall_spacing_ratio, L = p.tank_length, H = p.tank_height;
-  add_line(w, 0.0, 0.0, L, 0.0, db, extension, false);  // bottom, normal +y
-  add_line(w, 0.0, H, 0.0, 0.0, db, extension, false);  // left, normal +x
-  add_line(w, L, 0.0, L, H, db, extension, false);      // right, normal -x
+  add_line(w, 0.0, 0.0, L, 0.0, db, extension, false);         // bottom, normal +y
+  add_line(w, 0.0, H, 0.0, 0.0, db, extension, false);         // left, normal +x
+  add_line(w, L, 0.0, L, H, db, extension, false);             // right, normal -x
   if (p.lid) add_line(w, L, H, 0.0, H, db, extension, false);  // lid, normal -y
   for (const auto& iw : p.internal_walls) add_line(w, iw.xa, iw.ya, iw.xb, iw.yb, db, 0.0, true);
   return w;
@@ -40,9 +41,10 @@ WallGhosts build_wall_ghosts(const FluidParams& p, double support) {
   WallGhosts g;
   const double dx = p.spacing, db = dx * p.wall_spacing_ratio, L = p.tank_length, H = p.tank_height;
   const int rows = static_cast<int>(std::ceil(support / dx - 0.5)) + 1;
-  // Horizontal walls carry the ghosts past the corners too (they fill the corner quadrants); vertical walls only
-  // along their length, so no quadrant is counted twice.
-  auto line = [&](double xa, double ya, double xb, double yb, bool with_extension, int internal, double side) {
+  // Horizontal walls carry the ghosts past the corners too (they fill the corner quadrants); vertical walls
+  // only along their length, so no quadrant is counted twice.
+  auto line = [&](double xa, double ya, double xb, double yb, bool with_extension, int internal,
+                  double side) {
     const double len = std::hypot(xb - xa, yb - ya);
     const int n = std::max(1, static_cast<int>(std::lround(len / db)));
     const double s = len / n, tx = (xb - xa) / len, ty = (yb - ya) / len, nx = -ty * side, ny = tx * side;
@@ -56,7 +58,8 @@ WallGhosts build_wall_ghosts(const FluidParams& p, double support) {
         g.nx.push_back(nx);
         g.ny.push_back(ny);
         g.internal.push_back(internal);
-        g.corner.push_back(k < 0 || k > n ? 1 : 0);  // past the end of a horizontal wall: behind the side wall too
+        g.corner.push_back(
+            k < 0 || k > n ? 1 : 0);  // past the end of a horizontal wall: behind the side wall too
       }
     }
   };

@@ -54,7 +54,8 @@ void Q4EasFamily::evaluate(int e, const Coordinates& u, bool with_matrix, bool w
   // residual-only check before an assembly (step()) or none (the coupling's loop) gives the same bits.
   EasParameters alpha = alpha_[e];
   if (with_matrix && with_tangent) {
-    integrator_.internal_force_and_tangent_component_major(geometry_[e], u, alpha, force, matrix, &alpha_update_[e]);
+    integrator_.internal_force_and_tangent_component_major(geometry_[e], u, alpha, force, matrix,
+                                                           &alpha_update_[e]);
     alpha_solved_[e] = alpha;
   } else {
     integrator_.internal_force(geometry_[e], u, alpha, force);
@@ -67,8 +68,8 @@ void Q4EasFamily::evaluate(int e, const Coordinates& u, bool with_matrix, bool w
 }
 
 void Q4EasFamily::apply_increment(int e, const Eigen::Matrix<double, 2 * kNodes, 1>& du) {
-  // The linearisation of the condensed enhanced equilibrium at the last evaluation with the matrix (Simo & Armero
-  // 1992): alpha = alpha_solved + (d alpha / du) du_e.
+  // The linearisation of the condensed enhanced equilibrium at the last evaluation with the matrix (Simo &
+  // Armero 1992): alpha = alpha_solved + (d alpha / du) du_e.
   alpha_[e] = alpha_solved_[e];
   alpha_[e].noalias() += alpha_update_[e] * du;
 }

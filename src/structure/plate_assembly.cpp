@@ -30,7 +30,8 @@ void PlateSolver::build_matrix() {
   const int owned = partition_.owned_blocks;
   // Counts of blocks per block row: in the owned columns, elsewhere, and on or right of the diagonal (for the
   // symmetric SBAIJ formats, which store the upper triangle only).
-  std::vector<PetscInt> blocks_per_row(owned, 0), off_diagonal(owned, 0), upper(owned, 0), upper_off(owned, 0);
+  std::vector<PetscInt> blocks_per_row(owned, 0), off_diagonal(owned, 0), upper(owned, 0),
+      upper_off(owned, 0);
   for (int n = 0; n < node_count(); ++n) {
     if (partition_.node_rank[n] != rank_) continue;
     const int row = partition_.petsc_node[n] - partition_.first_block;
@@ -58,10 +59,11 @@ void PlateSolver::build_matrix() {
                                              upper.data(), upper_off.data()));
   HALFETI_PETSC_CALL(MatSetOption(matrix_.get(), MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
   PetscBool symmetric_storage = PETSC_FALSE;
-  HALFETI_PETSC_CALL(PetscObjectTypeCompareAny(reinterpret_cast<PetscObject>(matrix_.get()), &symmetric_storage,
-                                               MATSEQSBAIJ, MATMPISBAIJ, ""));
+  HALFETI_PETSC_CALL(PetscObjectTypeCompareAny(reinterpret_cast<PetscObject>(matrix_.get()),
+                                               &symmetric_storage, MATSEQSBAIJ, MATMPISBAIJ, ""));
   // K_eff is symmetric: the SBAIJ formats keep the upper triangle, the lower one is dropped on insertion.
-  if (symmetric_storage) HALFETI_PETSC_CALL(MatSetOption(matrix_.get(), MAT_IGNORE_LOWER_TRIANGULAR, PETSC_TRUE));
+  if (symmetric_storage)
+    HALFETI_PETSC_CALL(MatSetOption(matrix_.get(), MAT_IGNORE_LOWER_TRIANGULAR, PETSC_TRUE));
   HALFETI_PETSC_CALL(MatCreateVecs(matrix_.get(), solution_.out(), rhs_.out()));
   matrix_dirty_ = false;
 }
@@ -75,14 +77,18 @@ void PlateSolver::compute_external(double t) {
   for (int n = 0; n < node_count(); ++n) body_forces_.segment<2>(2 * n) = mass_row_sum_(n) * body;
 }
 
-void PlateSolver::update_acceleration() { newmark_.acceleration(u_, u_n_, v_n_, a_n_, dt_, a_); }
+void PlateSolver::update_acceleration() {
+  newmark_.acceleration(u_, u_n_, v_n_, a_n_, dt_, a_);
+}
 
 template <typename Family, typename ElementSink>
-void PlateSolver::element_terms(Family& family, ElementSink& element_sink, bool with_matrix, bool with_tangent,
-                                double mass_coefficient, bool inertia_in_residual, std::string& failure) {
+void PlateSolver::element_terms(Family& family, ElementSink& element_sink, bool with_matrix,
+                                bool with_tangent, double mass_coefficient, bool inertia_in_residual,
+                                std::string& failure) {
   constexpr int nn = Family::kNodes;
   typename Family::Vector force;
-  typename Family::Matrix element_matrix;  // component-major: row/column nn i + a = component i of local node a
+  typename Family::Matrix
+      element_matrix;  // component-major: row/column nn i + a = component i of local node a
   Eigen::Matrix<double, nn, 2> element_acceleration;
   for (int e : partition_.owned_elements) {
     const auto& nodes = family.nodes(e);
@@ -118,7 +124,7 @@ template <typename ElementSink, typename NodalSink>
 void PlateSolver::compute_newton_terms(ElementSink&& element_sink, NodalSink&& nodal_sink, bool with_matrix) {
   const bool inertia_in_residual = mode_ == Mode::kDynamic;
   const double stiffness_coefficient = mode_ == Mode::kInitialAcceleration ? 0.0 : 1.0;
-  const double mass_coefficient = mode_ == Mode::kDynamic ? newmark_.mass_coefficient(dt_)
+  const double mass_coefficient = mode_ == Mode::kDynamic               ? newmark_.mass_coefficient(dt_)
                                   : mode_ == Mode::kInitialAcceleration ? 1.0
                                                                         : 0.0;
   if (inertia_in_residual) update_acceleration();
@@ -268,7 +274,8 @@ void PlateSolver::build_scatter_map() {
   HALFETI_CHECK(done, "MatGetRowIJ did not return the matrix structure");
   auto find = [&](PetscInt row, PetscInt col) {
     const PetscInt* hit = std::lower_bound(ja + ia[row], ja + ia[row + 1], col);
-    HALFETI_CHECK(hit != ja + ia[row + 1] && *hit == col, "entry (" << row << ", " << col << ") not in pattern");
+    HALFETI_CHECK(hit != ja + ia[row + 1] && *hit == col,
+                  "entry (" << row << ", " << col << ") not in pattern");
     return static_cast<PetscInt>(hit - ja);
   };
   // Position of (row, col) in the value array; -1 for the lower triangle of symmetric storage.

@@ -29,7 +29,8 @@ std::string to_string(ElementType type) {
 Orientation parse_orientation(const std::string& name) {
   if (name == "standing") return Orientation::kStanding;
   if (name == "hanging") return Orientation::kHanging;
-  HALFETI_USER_ERROR("structure.orientation: unknown orientation '" << name << "' (known: standing, hanging)");
+  HALFETI_USER_ERROR("structure.orientation: unknown orientation '" << name
+                                                                    << "' (known: standing, hanging)");
 }
 
 int PlateMesh::element_count() const {
@@ -48,7 +49,8 @@ std::vector<std::array<int, 4>> PlateMesh::linear_cells() const {
   }
   for (const auto& e : elements)
     for (int j = 0; j < 2; ++j)
-      for (int i = 0; i < 2; ++i) out.push_back({e[i + 3 * j], e[i + 1 + 3 * j], e[i + 4 + 3 * j], e[i + 3 + 3 * j]});
+      for (int i = 0; i < 2; ++i)
+        out.push_back({e[i + 3 * j], e[i + 1 + 3 * j], e[i + 4 + 3 * j], e[i + 3 + 3 * j]});
   return out;
 }
 
@@ -56,9 +58,9 @@ namespace {
 
 // The node grid both meshes share, nx x ny nodes (row by row from the clamped base), with its clamped base,
 // named nodes, edge sets (edges of `per_edge` nodes: 3 for Q9, 2 for Q4 with the middle -1) and the
-// counterclockwise surface: right face upwards, top leftwards, left face downwards. All in the plate's frame; a
-// hanging plate maps it to the tank by the half turn about the clamp, x -> c - (x - c), which keeps the outline
-// counterclockwise and swaps the names of the sides.
+// counterclockwise surface: right face upwards, top leftwards, left face downwards. All in the plate's frame;
+// a hanging plate maps it to the tank by the half turn about the clamp, x -> c - (x - c), which keeps the
+// outline counterclockwise and swaps the names of the sides.
 void lay_out_grid(const PlateGeometry& geo, int nx, int ny, int per_edge, PlateMesh& mesh) {
   auto id = [nx](int i, int j) { return i + nx * j; };
   mesh.cells_across = geo.cells_across;
@@ -67,14 +69,19 @@ void lay_out_grid(const PlateGeometry& geo, int nx, int ny, int per_edge, PlateM
   const bool hanging = geo.orientation == Orientation::kHanging;
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
-      const Eigen::Vector2d local(geo.thickness * (double(i) / (nx - 1) - 0.5), geo.height * double(j) / (ny - 1));
-      mesh.nodes[id(i, j)] = hanging ? Eigen::Vector2d(geo.base_centre - local) : Eigen::Vector2d(geo.base_centre + local);
+      const Eigen::Vector2d local(geo.thickness * (double(i) / (nx - 1) - 0.5),
+                                  geo.height * double(j) / (ny - 1));
+      mesh.nodes[id(i, j)] =
+          hanging ? Eigen::Vector2d(geo.base_centre - local) : Eigen::Vector2d(geo.base_centre + local);
     }
   for (int i = 0; i < nx; ++i) mesh.clamped_nodes.push_back(id(i, 0));
   if (hanging)
-    mesh.named_nodes = {
-        {"clamp_left", id(nx - 1, 0)},       {"clamp_centre", id(nx / 2, 0)},       {"clamp_right", id(0, 0)},
-        {"bottom_left", id(nx - 1, ny - 1)}, {"bottom_centre", id(nx / 2, ny - 1)}, {"bottom_right", id(0, ny - 1)}};
+    mesh.named_nodes = {{"clamp_left", id(nx - 1, 0)},
+                        {"clamp_centre", id(nx / 2, 0)},
+                        {"clamp_right", id(0, 0)},
+                        {"bottom_left", id(nx - 1, ny - 1)},
+                        {"bottom_centre", id(nx / 2, ny - 1)},
+                        {"bottom_right", id(0, ny - 1)}};
   else
     mesh.named_nodes = {
         {"base_left", id(0, 0)},     {"base_centre", id(nx / 2, 0)},     {"base_right", id(nx - 1, 0)},
@@ -100,9 +107,10 @@ void lay_out_grid(const PlateGeometry& geo, int nx, int ny, int per_edge, PlateM
 // Q4 mesh: (cells_across + 1) x (cells_along + 1) nodes.
 PlateMesh make_q4_mesh(const PlateGeometry& geo) {
   if (geo.cells_across % 2 != 0)
-    HALFETI_USER_ERROR("structure.cells_across = " << geo.cells_across
-                                                   << " must be even for the q4_eas element (the top and base "
-                                                      "centres must be nodes)");
+    HALFETI_USER_ERROR("structure.cells_across = "
+                       << geo.cells_across
+                       << " must be even for the q4_eas element (the top and base "
+                          "centres must be nodes)");
   PlateMesh mesh;
   mesh.element_type = ElementType::kQ4Eas;
   const int nx = geo.cells_across + 1, ny = geo.cells_along + 1;

@@ -26,7 +26,8 @@ PlatePartition partition_plate(const PlateMesh& mesh, MPI_Comm comm) {
       for (int e = 0; e < ne; ++e) {
         const int* nodes = mesh.element_nodes(e);
         const bool q9 = mesh.nodes_per_element() == 9;
-        for (int a : q9 ? std::array<int, 4>{0, 2, 8, 6} : std::array<int, 4>{0, 1, 3, 2}) eind.push_back(nodes[a]);
+        for (int a : q9 ? std::array<int, 4>{0, 2, 8, 6} : std::array<int, 4>{0, 1, 3, 2})
+          eind.push_back(nodes[a]);
         eptr[e + 1] = static_cast<idx_t>(eind.size());
       }
       idx_t n_elements = ne, n_nodes = nn, common = 2, parts = size, cut = 0;

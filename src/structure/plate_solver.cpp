@@ -73,8 +73,8 @@ PlateSolver::PlateSolver(MPI_Comm comm, const StructureParameters& params,
     *v = Eigen::VectorXd::Zero(dof_count());
 
   // A direct solve by default (small banded systems); -structure_ksp_type / -structure_pc_type override.
-  // One rank: K_eff is symmetric (hyperelastic tangent, cables, Newmark mass), so PETSc's Cholesky on the upper
-  // triangle (SeqSBAIJ, block size 2) in the natural order, which is banded (nodes numbered across the
+  // One rank: K_eff is symmetric (hyperelastic tangent, cables, Newmark mass), so PETSc's Cholesky on the
+  // upper triangle (SeqSBAIJ, block size 2) in the natural order, which is banded (nodes numbered across the
   // thickness first): half the work of the LU (docs/structure.md, "Cost of one Newton iteration"). Several
   // ranks: LU by MUMPS (PETSc's own factorisations are sequential).
   HALFETI_PETSC_CALL(KSPCreate(comm_.get(), ksp_.out()));
@@ -94,7 +94,8 @@ PlateSolver::PlateSolver(MPI_Comm comm, const StructureParameters& params,
   // reverse Cuthill-McKee, unless the command line names one.
   PetscBool lu = PETSC_FALSE, ordering_given = PETSC_FALSE;
   HALFETI_PETSC_CALL(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(pc), PCLU, &lu));
-  HALFETI_PETSC_CALL(PetscOptionsHasName(nullptr, "structure_", "-pc_factor_mat_ordering_type", &ordering_given));
+  HALFETI_PETSC_CALL(
+      PetscOptionsHasName(nullptr, "structure_", "-pc_factor_mat_ordering_type", &ordering_given));
   if (lu && size_ == 1 && !ordering_given) HALFETI_PETSC_CALL(PCFactorSetMatOrderingType(pc, MATORDERINGRCM));
 }
 
@@ -152,8 +153,8 @@ std::vector<double> PlateSolver::save_state() const {
   const auto n = static_cast<std::size_t>(dof_count());
   std::vector<double> out;
   for (const Eigen::VectorXd* v : {&u_, &v_, &a_}) out.insert(out.end(), v->data(), v->data() + n);
-  // Each element's state (Q4-EAS: its enhanced parameters) lives on the rank that owns it: a sum over ranks of
-  // zeros elsewhere is exact.
+  // Each element's state (Q4-EAS: its enhanced parameters) lives on the rank that owns it: a sum over ranks
+  // of zeros elsewhere is exact.
   std::vector<double> elements = with_family([&](const auto& family) {
     constexpr int k = std::decay_t<decltype(family)>::kStatePerElement;
     std::vector<double> state(static_cast<std::size_t>(family.state_size()), 0.0);
@@ -162,19 +163,21 @@ std::vector<double> PlateSolver::save_state() const {
     return state;
   });
   if (size_ > 1 && !elements.empty())
-    MPI_Allreduce(MPI_IN_PLACE, elements.data(), static_cast<int>(elements.size()), MPI_DOUBLE, MPI_SUM, comm_.get());
+    MPI_Allreduce(MPI_IN_PLACE, elements.data(), static_cast<int>(elements.size()), MPI_DOUBLE, MPI_SUM,
+                  comm_.get());
   out.insert(out.end(), elements.begin(), elements.end());
   return out;
 }
 
 void PlateSolver::restore_state(const std::vector<double>& state) {
   const auto n = static_cast<std::size_t>(dof_count());
-  const auto element_state = static_cast<std::size_t>(with_family([](const auto& f) { return f.state_size(); }));
+  const auto element_state =
+      static_cast<std::size_t>(with_family([](const auto& f) { return f.state_size(); }));
   if (state.size() != 3 * n + element_state)
-    HALFETI_USER_ERROR("restart: the plate's state has " << state.size() << " values, this scene's plate needs "
-                                                         << 3 * n + element_state);
-  // The matrix pattern first: its pass evaluates the elements and the nodal elements (a cable's warm start), which
-  // the caller restores after this.
+    HALFETI_USER_ERROR("restart: the plate's state has "
+                       << state.size() << " values, this scene's plate needs " << 3 * n + element_state);
+  // The matrix pattern first: its pass evaluates the elements and the nodal elements (a cable's warm start),
+  // which the caller restores after this.
   prepare_matrix();
   const double* p = state.data();
   for (Eigen::VectorXd* v : {&u_, &v_, &a_}) {
@@ -183,7 +186,8 @@ void PlateSolver::restore_state(const std::vector<double>& state) {
   }
   with_family([&](auto& family) {
     constexpr int k = std::decay_t<decltype(family)>::kStatePerElement;
-    for (int e = 0; k > 0 && e < family.count(); ++e) family.restore_state(e, p + static_cast<std::size_t>(e) * k);
+    for (int e = 0; k > 0 && e < family.count(); ++e)
+      family.restore_state(e, p + static_cast<std::size_t>(e) * k);
   });
 }
 
@@ -192,11 +196,11 @@ std::string PlateSolver::summary() const {
   const auto& m = params_.material;
   std::ostringstream os;
   os << "structure: plate " << g.height << " m x " << g.thickness << " m, " << g.cells_across << " x "
-     << g.cells_along << " " << with_family([](const auto& f) { return f.kName; }) << " (" << mesh_.element_count()
-     << " elements, " << dof_count() << " dofs), "
-     << to_string(m.model) << " E = " << m.youngs_modulus << " Pa, nu = " << m.poisson_ratio
-     << ", rho = " << m.density << " kg/m^3, " << to_string(m.hypothesis) << " per unit depth, "
-     << (g.element == ElementType::kQ4Eas              ? "2x2 (enhanced strain)"
+     << g.cells_along << " " << with_family([](const auto& f) { return f.kName; }) << " ("
+     << mesh_.element_count() << " elements, " << dof_count() << " dofs), " << to_string(m.model)
+     << " E = " << m.youngs_modulus << " Pa, nu = " << m.poisson_ratio << ", rho = " << m.density
+     << " kg/m^3, " << to_string(m.hypothesis) << " per unit depth, "
+     << (g.element == ElementType::kQ4Eas  ? "2x2 (enhanced strain)"
          : m.selective_reduced_integration ? "selective reduced"
                                            : "full")
      << " integration, Newmark beta = " << params_.newmark.beta << " gamma = " << params_.newmark.gamma
@@ -231,9 +235,11 @@ void PlateSolver::begin_step(double t, double dt) {
 }
 
 void PlateSolver::set_next_predictor(const Eigen::VectorXd& u) {
-  HALFETI_CHECK(u.size() == dof_count(), "plate predictor of " << u.size() << " values for " << dof_count() << " dofs");
+  HALFETI_CHECK(u.size() == dof_count(),
+                "plate predictor of " << u.size() << " values for " << dof_count() << " dofs");
   next_predictor_ = u;
-  for (int node = 0; node < node_count(); ++node)  // the clamped rows keep their prescribed (zero) displacement
+  for (int node = 0; node < node_count();
+       ++node)  // the clamped rows keep their prescribed (zero) displacement
     if (clamped_[node]) next_predictor_.segment<2>(2 * node) = u_.segment<2>(2 * node);
 }
 
@@ -250,8 +256,9 @@ Vec PlateSolver::solve_newton_increment() {
   ScopedTimer timer(timers_, "structure_solve");
   const KSPConvergedReason reason = solve_with(ksp_.get(), matrix_.get(), rhs_.get(), solution_.get());
   if (reason < 0)
-    HALFETI_NUMERICAL_ERROR("structure: KSP solve failed (" << when() << "), " << ksp_failure(ksp_.get(), reason)
-                                                                  << "; try -structure_pc_type lu");
+    HALFETI_NUMERICAL_ERROR("structure: KSP solve failed (" << when() << "), "
+                                                            << ksp_failure(ksp_.get(), reason)
+                                                            << "; try -structure_pc_type lu");
   return solution_.get();
 }
 
@@ -337,11 +344,11 @@ void PlateSolver::end_step() {
   last_.residual_norm = residual_norm_;
 }
 
-// The plate-alone Newton loop shared by step() and solve_static(). After an increment the convergence test needs
-// the residual only: it is computed without the tangent (a third of the element cost), and the full system is
-// assembled only when another iteration follows. The residual is the same either way (the same element force
-// code), so the iterates are those of assembling the full system every time (the split-API test checks this
-// bit for bit).
+// The plate-alone Newton loop shared by step() and solve_static(). After an increment the convergence test
+// needs the residual only: it is computed without the tangent (a third of the element cost), and the full
+// system is assembled only when another iteration follows. The residual is the same either way (the same
+// element force code), so the iterates are those of assembling the full system every time (the split-API test
+// checks this bit for bit).
 void PlateSolver::newton_loop(const char* what) {
   const int max_iterations = params_.newton.max_iterations;
   assemble_newton_system();
@@ -350,8 +357,8 @@ void PlateSolver::newton_loop(const char* what) {
     if (last_.newton_iterations >= max_iterations)
       HALFETI_NUMERICAL_ERROR("structure: Newton did not converge in "
                               << max_iterations << " iterations (" << what << ", " << when()
-                              << "): ||r|| = " << residual_norm() << " N/m, last ||du||_inf = "
-                              << last_.increment_norm << " m");
+                              << "): ||r|| = " << residual_norm()
+                              << " N/m, last ||du||_inf = " << last_.increment_norm << " m");
     apply_increment(solve_newton_increment());
     if (converged()) return;
     assemble_residual();
@@ -403,8 +410,8 @@ double PlateSolver::element_energy(int k) const {
 }
 
 double PlateSolver::gravity_potential_energy() const {
-  // The nodal masses are M's row sums (compute_external): for the uniform field g, -u^T M g exactly. Every node is
-  // on this rank (the plate's state is replicated), so no sum over ranks.
+  // The nodal masses are M's row sums (compute_external): for the uniform field g, -u^T M g exactly. Every
+  // node is on this rank (the plate's state is replicated), so no sum over ranks.
   double e = 0.0;
   for (int n = 0; n < node_count(); ++n) e -= mass_row_sum_(n) * params_.gravity.dot(u_.segment<2>(2 * n));
   return e;
@@ -439,7 +446,8 @@ void PlateSolver::element_fields(std::vector<double>& von_mises, std::vector<dou
   std::vector<double> both(2 * static_cast<std::size_t>(n), 0.0);  // each element from its one owner, summed
   const double density = params_.material.density;
   for (int k : partition_.owned_elements) {
-    const double area = with_family([&](const auto& f) { return f.mass(k).sum(); }) / density;  // sums to rho A
+    const double area =
+        with_family([&](const auto& f) { return f.mass(k).sum(); }) / density;  // sums to rho A
     both[2 * k] = element_von_mises(k);
     both[2 * k + 1] = element_energy(k) / area;
   }
@@ -456,7 +464,8 @@ double PlateSolver::max_von_mises() const {
   double m = 0.0;
   with_family([&](const auto& family) {
     for (int k : partition_.owned_elements)
-      for (const auto& s : family.cauchy_at_points(k, family.displacement(k, u_))) m = std::max(m, von_mises(s));
+      for (const auto& s : family.cauchy_at_points(k, family.displacement(k, u_)))
+        m = std::max(m, von_mises(s));
   });
   double global = m;
   if (size_ > 1) MPI_Allreduce(&m, &global, 1, MPI_DOUBLE, MPI_MAX, comm_.get());

@@ -10,9 +10,10 @@ namespace {
 
 constexpr double kGauss2 = 0.5773502691896257;  // 1 / sqrt(3)
 constexpr int kMaxLocalIterations = 25;
-// Local Newton stops when the next correction |d alpha|_inf is below kLocalRtol |alpha|_inf + kLocalAtol * size;
-// that last correction is not applied to the stress state but enters the force linearly (f_u + K_ua d alpha),
-// so the force is accurate to O(|d alpha|^2) (quadratic convergence): far below round-off of the stresses.
+// Local Newton stops when the next correction |d alpha|_inf is below kLocalRtol |alpha|_inf + kLocalAtol *
+// size; that last correction is not applied to the stress state but enters the force linearly (f_u + K_ua d
+// alpha), so the force is accurate to O(|d alpha|^2) (quadratic convergence): far below round-off of the
+// stresses.
 constexpr double kLocalRtol = 1e-8;
 constexpr double kLocalAtol = 1e-13;
 
@@ -74,13 +75,14 @@ Q4EasGeometry HyperelasticQ4Eas::reference_geometry(const Q4Coordinates& referen
 // Closed form for Neo-Hookean in plane strain (derivation in q9_element.cpp): with q = g F^-1 (spatial
 // gradients) and m = mu - lambda ln J, K(6i+a, 6k+b) = w (lambda q_ai q_bk + m q_ak q_bi) + mu delta_ik L_ab.
 template <bool kFull>
-void HyperelasticQ4Eas::evaluate(const Q4EasGeometry& g, const Extended& U, Extended& force, Tangent12& k) const {
-  // kFull false (the force-only path) fills the alpha rows of the tangent only (the local solve and the force's
-  // condensation need nothing else), each entry computed exactly as in the full path.
+void HyperelasticQ4Eas::evaluate(const Q4EasGeometry& g, const Extended& U, Extended& force,
+                                 Tangent12& k) const {
+  // kFull false (the force-only path) fills the alpha rows of the tangent only (the local solve and the
+  // force's condensation need nothing else), each entry computed exactly as in the full path.
   force.setZero();
   const double mu = material_.mu(), lambda = material_.lambda();
-  // Closed form: per point, K_00 += (wl + wm) q0 q0^T, K_11 += (wl + wm) q1 q1^T, K_01 += wl q0 q1^T + wm q1 q0^T
-  // (entry [b][a] = row a, column b), K_10 = K_01^T.
+  // Closed form: per point, K_00 += (wl + wm) q0 q0^T, K_11 += (wl + wm) q1 q1^T, K_01 += wl q0 q1^T + wm q1
+  // q0^T (entry [b][a] = row a, column b), K_10 = K_01^T.
   double k00[6][6] = {}, k11[6][6] = {}, k01[6][6] = {};
   if (!closed_form_) k.setZero();
   for (const auto& p : g.points) {
@@ -89,8 +91,8 @@ void HyperelasticQ4Eas::evaluate(const Q4EasGeometry& g, const Extended& U, Exte
     const double f00 = 1.0 + h(0, 0), f01 = h(0, 1), f10 = h(1, 0), f11 = 1.0 + h(1, 1);
     const double det_f = f00 * f11 - f01 * f10;
     if (!(det_f > 0.0))
-      HALFETI_NUMERICAL_ERROR("structure: inverted element point (det F = " << det_f
-                                                                            << " <= 0): deformation too large");
+      HALFETI_NUMERICAL_ERROR(
+          "structure: inverted element point (det F = " << det_f << " <= 0): deformation too large");
     const double w = p.weight;
     Eigen::Matrix2d s;
     if (closed_form_) {
@@ -127,8 +129,8 @@ void HyperelasticQ4Eas::evaluate(const Q4EasGeometry& g, const Extended& U, Exte
             k01[b][a] += l0[a] * q1[b] + m1[a] * q0[b];
           }
       } else {
-        // The alpha rows only: K(4 + m, .) and K(10 + m, .), i.e. k00, k11, k01 at a = 4, 5 and k01 at b = 4, 5;
-        // each entry by the same expression as above (same bits).
+        // The alpha rows only: K(4 + m, .) and K(10 + m, .), i.e. k00, k11, k01 at a = 4, 5 and k01 at b = 4,
+        // 5; each entry by the same expression as above (same bits).
         for (int b = 0; b < 6; ++b)
           for (int a = 4; a < 6; ++a) {
             k00[b][a] += d0[a] * q0[b];
@@ -150,7 +152,8 @@ void HyperelasticQ4Eas::evaluate(const Q4EasGeometry& g, const Extended& U, Exte
             for (int ll = 0; ll < 2; ++ll) {
               double sum = i == kk ? s(jj, ll) : 0.0;
               for (int ii = 0; ii < 2; ++ii)
-                for (int k2 = 0; k2 < 2; ++k2) sum += f(i, ii) * f(kk, k2) * r.tangent(kVoigt[ii][jj], kVoigt[k2][ll]);
+                for (int k2 = 0; k2 < 2; ++k2)
+                  sum += f(i, ii) * f(kk, k2) * r.tangent(kVoigt[ii][jj], kVoigt[k2][ll]);
               a_ik(jj, ll) = w * sum;
             }
           const Eigen::Matrix<double, 6, 2> ga = gr * a_ik;
@@ -196,8 +199,8 @@ void HyperelasticQ4Eas::solve_local(const Q4EasGeometry& g, const Q4Coordinates&
     kaa_inverse = kaa.inverse();
     correction = -kaa_inverse * h;
     if (!correction.allFinite())
-      HALFETI_NUMERICAL_ERROR("structure: Q4-EAS enhanced stiffness singular (det K_aa = " << kaa.determinant()
-                                                                                           << ")");
+      HALFETI_NUMERICAL_ERROR(
+          "structure: Q4-EAS enhanced stiffness singular (det K_aa = " << kaa.determinant() << ")");
     if (correction.lpNorm<Eigen::Infinity>() <=
         kLocalRtol * alpha.lpNorm<Eigen::Infinity>() + kLocalAtol * g.size) {
       last_local_iterations_ = it + 1;
@@ -228,7 +231,8 @@ void HyperelasticQ4Eas::internal_force(const Q4EasGeometry& g, const Q4Coordinat
   alpha += correction;
 }
 
-void HyperelasticQ4Eas::internal_force_and_tangent_component_major(const Q4EasGeometry& g, const Q4Coordinates& u,
+void HyperelasticQ4Eas::internal_force_and_tangent_component_major(const Q4EasGeometry& g,
+                                                                   const Q4Coordinates& u,
                                                                    EasParameters& alpha, Q4Vector& force,
                                                                    Q4Matrix& component_major,
                                                                    EasUpdate* update) const {
@@ -261,7 +265,8 @@ void HyperelasticQ4Eas::internal_force_and_tangent_component_major(const Q4EasGe
 }
 
 void HyperelasticQ4Eas::internal_force_and_tangent(const Q4EasGeometry& g, const Q4Coordinates& u,
-                                                   EasParameters& alpha, Q4Vector& force, Q4Matrix& tangent) const {
+                                                   EasParameters& alpha, Q4Vector& force,
+                                                   Q4Matrix& tangent) const {
   Q4Matrix cm;
   internal_force_and_tangent_component_major(g, u, alpha, force, cm, nullptr);
   for (int i = 0; i < 2; ++i)
@@ -285,14 +290,16 @@ double HyperelasticQ4Eas::energy(const Q4EasGeometry& g, const Q4Coordinates& u,
   return e;
 }
 
-Eigen::Matrix<double, kQ4Nodes, kQ4Nodes> HyperelasticQ4Eas::scalar_mass(const Q4EasGeometry& g, double density) {
+Eigen::Matrix<double, kQ4Nodes, kQ4Nodes> HyperelasticQ4Eas::scalar_mass(const Q4EasGeometry& g,
+                                                                         double density) {
   // 2x2 Gauss integrates N_a N_b exactly on parallelograms (the plate's rectangles).
   Eigen::Matrix<double, kQ4Nodes, kQ4Nodes> m = Eigen::Matrix<double, kQ4Nodes, kQ4Nodes>::Zero();
   for (const auto& p : g.points) m.noalias() += density * p.weight * p.shape * p.shape.transpose();
   return m;
 }
 
-std::array<Eigen::Vector4d, 4> HyperelasticQ4Eas::cauchy_at_points(const Q4EasGeometry& g, const Q4Coordinates& u,
+std::array<Eigen::Vector4d, 4> HyperelasticQ4Eas::cauchy_at_points(const Q4EasGeometry& g,
+                                                                   const Q4Coordinates& u,
                                                                    EasParameters alpha) const {
   Q4Vector force;
   internal_force(g, u, alpha, force);

@@ -33,12 +33,13 @@ Q9Point reference_point(const Q9Coordinates& reference, double xi, double eta, d
 
 // The sums over the points of the closed-form Neo-Hookean kernel below, as rank-one updates on contiguous
 // 9-vectors (the columns of the column-major blocks); K_00 and K_11 are symmetric, only their lower triangles
-// are read. Compiled twice (AVX2 and baseline, chosen at run time): each entry is summed in the same order in both,
-// without fused multiply-adds (ISO C++ mode), so both give the same bits.
+// are read. Compiled twice (AVX2 and baseline, chosen at run time): each entry is summed in the same order in
+// both, without fused multiply-adds (ISO C++ mode), so both give the same bits.
 __attribute__((target_clones("avx2", "default"))) void rank_one_sums(
     int points, const double* __restrict q0, const double* __restrict q1, const double* __restrict diagonal,
-    const double* __restrict cross_lambda, const double* __restrict cross_m, double (*__restrict k00)[kQ9Nodes],
-    double (*__restrict k11)[kQ9Nodes], double (*__restrict k01)[kQ9Nodes]) {
+    const double* __restrict cross_lambda, const double* __restrict cross_m,
+    double (*__restrict k00)[kQ9Nodes], double (*__restrict k11)[kQ9Nodes],
+    double (*__restrict k01)[kQ9Nodes]) {
   for (int b = 0; b < kQ9Nodes; ++b)
     for (int a = 0; a < kQ9Nodes; ++a) k00[b][a] = k11[b][a] = k01[b][a] = 0.0;
   for (int p = 0; p < points; ++p) {
@@ -161,8 +162,8 @@ void HyperelasticQ9::accumulate(const Q9Point& p, const Q9Coordinates& u, Energy
 // mixed tangent A_iJkL = F_iI F_kK D_IJKL + delta_ik S_JL of W = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2
 // reduces, using F C^-1 F^T = I and F C^-1 = b, to
 //   A_iJkL = lambda b_iJ b_kL + m b_iL b_kJ + mu delta_ik delta_JL,   m = mu - lambda ln J,
-// (the geometric term delta_ik S_JL and the delta_ik C^-1_JL part of D add up to mu delta_ik delta_JL). So at a
-// point of weight w
+// (the geometric term delta_ik S_JL and the delta_ik C^-1_JL part of D add up to mu delta_ik delta_JL). So at
+// a point of weight w
 //   K_ab(i, k) = w (lambda q_ai q_bk + m q_ak q_bi + mu delta_ik dN_a/dX . dN_b/dX).
 // The last term does not depend on u: summed over the 3x3 points once (Q9Geometry::laplacian). The rest are
 // rank-one products of the columns of q: with the points as columns of Q0, Q1 (9 x 13),
@@ -195,8 +196,8 @@ void HyperelasticQ9::neo_hookean_plane_strain(const Q9Geometry& g, const Q9Coord
     const double f00 = 1.0 + h00, f01 = h01, f10 = h10, f11 = 1.0 + h11;
     const double det_f = f00 * f11 - f01 * f10;
     if (!(det_f > 0.0))
-      HALFETI_NUMERICAL_ERROR("structure: inverted element point (det F = " << det_f
-                                                                            << " <= 0): deformation too large");
+      HALFETI_NUMERICAL_ERROR(
+          "structure: inverted element point (det F = " << det_f << " <= 0): deformation too large");
     // E = (H + H^T + H^T H) / 2 and det C - 1 = 2 tr E + 4 det E without forming C (see material.hpp).
     const double e00 = h00 + 0.5 * (h00 * h00 + h10 * h10);
     const double e11 = h11 + 0.5 * (h01 * h01 + h11 * h11);
@@ -250,7 +251,8 @@ void HyperelasticQ9::neo_hookean_plane_strain(const Q9Geometry& g, const Q9Coord
   for (int a = 0; a < kQ9Nodes; ++a) force.segment<2>(2 * a) = nodal.row(a).transpose();
   if constexpr (kTangent) {
     double k00[kQ9Nodes][kQ9Nodes], k11[kQ9Nodes][kQ9Nodes], k01[kQ9Nodes][kQ9Nodes];
-    rank_one_sums(n, q0.data(), q1.data(), diagonal.data(), cross_lambda.data(), cross_m.data(), k00, k11, k01);
+    rank_one_sums(n, q0.data(), q1.data(), diagonal.data(), cross_lambda.data(), cross_m.data(), k00, k11,
+                  k01);
     Q9Matrix& k = *component_major;
     for (int b = 0; b < kQ9Nodes; ++b)
       for (int a = b; a < kQ9Nodes; ++a) {
@@ -304,7 +306,8 @@ void HyperelasticQ9::internal_force(const Q9Geometry& g, const Q9Coordinates& u,
 }
 
 void HyperelasticQ9::internal_force_and_tangent_component_major(const Q9Geometry& g, const Q9Coordinates& u,
-                                                                Q9Vector& force, Q9Matrix& component_major) const {
+                                                                Q9Vector& force,
+                                                                Q9Matrix& component_major) const {
   if (closed_form_) return neo_hookean_plane_strain<true>(g, u, force, &component_major);
   force.setZero();
   component_major.setZero();

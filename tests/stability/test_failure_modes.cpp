@@ -1,6 +1,6 @@
-// Each failure the atlas maps (docs/stability.md) is detected by a named monitor, with its cause, before a NaN
-// reaches an output; warnings are seen as they happen (stderr, log.txt), tallied in summary.json and in the run's
-// status and last line; a failure's checkpoint and summary carry the failed step's time.
+// Each failure the atlas maps (docs/stability.md) is detected by a named monitor, with its cause, before a
+// NaN reaches an output; warnings are seen as they happen (stderr, log.txt), tallied in summary.json and in
+// the run's status and last line; a failure's checkpoint and summary carry the failed step's time.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,7 +13,9 @@ using namespace halfeti;
 
 namespace {
 
-std::string scene(const std::string& name) { return test::source_path("inputs/stability/" + name + ".yaml"); }
+std::string scene(const std::string& name) {
+  return test::source_path("inputs/stability/" + name + ".yaml");
+}
 
 // The text of one member of summary.json's top level (its value up to the next top-level member).
 std::string member(const std::string& summary, const std::string& key) {
@@ -59,7 +61,8 @@ TEST(FailureModes, ACableGoingSlackAndSnappingTautIsWarnedAndItsSnapLoadKept) {
 }
 
 TEST(FailureModes, TheHealthTallyOfARestartedRunIsThatOfOneThatNeverStopped) {
-  const std::string whole = test::binary_path("stability_snap_whole"), legs = test::binary_path("stability_snap_legs");
+  const std::string whole = test::binary_path("stability_snap_whole"),
+                    legs = test::binary_path("stability_snap_legs");
   ASSERT_EQ(test::run_scene(scene("cable_snap"), whole, "--set scene.end_time=0.3"), 0);
   ASSERT_EQ(test::run_scene(scene("cable_snap"), legs, "--set scene.end_time=0.15"), 0);
   ASSERT_EQ(test::run_scene(scene("cable_snap"), legs, "--set scene.end_time=0.3 --restart " + legs), 0)
@@ -73,13 +76,15 @@ TEST(FailureModes, TheHealthTallyOfARestartedRunIsThatOfOneThatNeverStopped) {
 }
 
 TEST(FailureModes, AStepPastTheStabilityLimitStopsAtTheFailedStepWithItsTimeInTheCheckpoint) {
-  // fluid.cfl = 2: twice the explicit step's limit. A particle leaves the tank within a few steps; the run says so
-  // (exit 3, the monitor's message), before a NaN reaches probes.csv, and the checkpoint and summary.json carry the
-  // failed step's time and number, those in the message.
+  // fluid.cfl = 2: twice the explicit step's limit. A particle leaves the tank within a few steps; the run
+  // says so (exit 3, the monitor's message), before a NaN reaches probes.csv, and the checkpoint and
+  // summary.json carry the failed step's time and number, those in the message.
   const std::string out = test::binary_path("stability_cfl");
-  ASSERT_EQ(test::run_scene(scene("tank_shake"), out, "--set fluid.cfl=2.0 --set output.probe_interval=0.0001"), 3);
+  ASSERT_EQ(
+      test::run_scene(scene("tank_shake"), out, "--set fluid.cfl=2.0 --set output.probe_interval=0.0001"), 3);
   const std::string err = test::read_text(out + ".stderr");
-  EXPECT_NE(err.find("warning: fluid.cfl = 2 is past the explicit step's usual stability limit"), std::string::npos);
+  EXPECT_NE(err.find("warning: fluid.cfl = 2 is past the explicit step's usual stability limit"),
+            std::string::npos);
   const std::size_t at = err.find("halfeti: error: t = ");
   ASSERT_NE(at, std::string::npos) << err;
   EXPECT_NE(err.find("left the tank through a wall", at), std::string::npos) << err;
@@ -100,14 +105,17 @@ TEST(FailureModes, AStepPastTheStabilityLimitStopsAtTheFailedStepWithItsTimeInTh
 }
 
 TEST(FailureModes, TheTensileInstabilityIsFoundByTheSpacingMonitorWithItsPlace) {
-  // Standard SPH without Monaghan's correction under the paper's pulse: particles clump (docs/stability.md: from
-  // 0.175 s on, to 0.0007 dx); the monitor warns, and summary.json keeps the closest pair (in dx) and where it was.
+  // Standard SPH without Monaghan's correction under the paper's pulse: particles clump (docs/stability.md:
+  // from 0.175 s on, to 0.0007 dx); the monitor warns, and summary.json keeps the closest pair (in dx) and
+  // where it was.
   const std::string out = test::binary_path("stability_tensile");
-  ASSERT_EQ(test::run_scene(scene("tank_shake"), out,
-                            "--set fluid.scheme=standard --set fluid.tensile_correction=false --set scene.end_time=0.25"),
+  ASSERT_EQ(test::run_scene(
+                scene("tank_shake"), out,
+                "--set fluid.scheme=standard --set fluid.tensile_correction=false --set scene.end_time=0.25"),
             0)
       << test::read_text(out + ".stderr");
-  EXPECT_NE(test::read_text(out + ".stderr").find("spacing collapse, tensile instability"), std::string::npos);
+  EXPECT_NE(test::read_text(out + ".stderr").find("spacing collapse, tensile instability"),
+            std::string::npos);
   const std::string health = member(test::read_text(out + "/summary.json"), "health");
   const std::size_t at = health.find("\"spacing_collapse\": {");
   ASSERT_NE(at, std::string::npos) << health;
@@ -122,7 +130,8 @@ TEST(FailureModes, TheAddedMassInstabilityOfTheTrapezoidalRuleStopsTheCoupledRun
   // The paper's light plate with the trapezoidal rule and no interface added mass: the explicit exchange's
   // added-mass instability (docs/stability.md: it fails at 0.016 s) stops the run as a coupling failure, with
   // a checkpoint, before a NaN reaches probes.csv; with the acoustic added mass the same step is passed.
-  const std::string sets = "--set structure.newmark_gamma=0.5 --set structure.newmark_beta=0.25 --set scene.end_time=0.05";
+  const std::string sets =
+      "--set structure.newmark_gamma=0.5 --set structure.newmark_beta=0.25 --set scene.end_time=0.05";
   const std::string out = test::binary_path("stability_added_mass");
   ASSERT_EQ(test::run_scene(scene("plate_pulse"), out, sets + " --set coupling.added_mass=none"), 3);
   const std::string summary = test::read_text(out + "/summary.json");

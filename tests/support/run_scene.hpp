@@ -14,16 +14,21 @@
 
 namespace halfeti::test {
 
-inline std::string source_path(const std::string& relative) { return std::string(HALFETI_SOURCE_DIR) + "/" + relative; }
-inline std::string binary_path(const std::string& relative) { return std::string(HALFETI_BINARY_DIR) + "/" + relative; }
+inline std::string source_path(const std::string& relative) {
+  return std::string(HALFETI_SOURCE_DIR) + "/" + relative;
+}
+inline std::string binary_path(const std::string& relative) {
+  return std::string(HALFETI_BINARY_DIR) + "/" + relative;
+}
 
 // Runs `halfeti run SCENE --out OUT --overwrite ARGS` on `ranks` ranks (0: without mpirun); returns the exit
 // status. (--overwrite: a test's folder holds the test's previous run.)
-inline int run_scene(const std::string& scene, const std::string& out, const std::string& args = "", int ranks = 0) {
+inline int run_scene(const std::string& scene, const std::string& out, const std::string& args = "",
+                     int ranks = 0) {
   std::string cmd;
   if (ranks > 0) cmd = source_path("tests/support/clean-mpirun") + " -n " + std::to_string(ranks) + " ";
-  cmd += binary_path("src/app/halfeti") + " run " + scene + " --out " + out + " --overwrite " + args + " >" + out +
-         ".stdout 2>" + out + ".stderr";
+  cmd += binary_path("src/app/halfeti") + " run " + scene + " --out " + out + " --overwrite " + args + " >" +
+         out + ".stdout 2>" + out + ".stderr";
   const int raw = std::system(cmd.c_str());
   return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
 }

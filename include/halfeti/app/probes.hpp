@@ -1,5 +1,5 @@
-// Probes: named columns of probes.csv. Each probe kind resolves through one registry: its keys (the scene schema
-// of `probes[]` is built from it) and a factory that binds it to the parts of the run.
+// Probes: named columns of probes.csv. Each probe kind resolves through one registry: its keys (the scene
+// schema of `probes[]` is built from it) and a factory that binds it to the parts of the run.
 #pragma once
 
 #include <functional>
@@ -19,8 +19,8 @@ struct ProbeColumn {
       : name(std::move(n)), sample(std::move(s)), unit(std::move(u)) {}
   std::string name;
   std::function<double(double t)> sample;  // collective over the run's ranks; same value on every rank
-  std::string unit;                          // SI ("-" for a pure number, "dx" in particle spacings): probes.json
-  std::string kind;                          // the probe's kind (set by make_probes)
+  std::string unit;  // SI ("-" for a pure number, "dx" in particle spacings): probes.json
+  std::string kind;  // the probe's kind (set by make_probes)
 };
 
 // Throws UserError when the probe names a part the scene does not have.

@@ -3,7 +3,6 @@
 #pragma once
 
 #include <Eigen/Dense>
-
 #include <memory>
 #include <string>
 #include <vector>
@@ -44,6 +43,7 @@ StructureSetup structure_setup(const scene::Node& root);
 
 // Resolves every cable, including the unstretched length for an initial stress (at the undeformed plate).
 // `fluid_density` > 0 makes submerged cables buoyant.
-std::vector<CableSetup> cable_setups(const scene::Node& root, const StructureSetup& plate, double fluid_density);
+std::vector<CableSetup> cable_setups(const scene::Node& root, const StructureSetup& plate,
+                                     double fluid_density);
 
 }  // namespace halfeti::app

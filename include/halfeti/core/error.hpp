@@ -6,7 +6,8 @@
 // and two user-facing raisers that carry the error class the program exits with:
 //   HALFETI_USER_ERROR(msg)         bad input: scene, file, option (exit status 2)
 //   HALFETI_NUMERICAL_ERROR(msg)    a method that failed: blow-up, no convergence (exit status 3)
-//   HALFETI_IO_ERROR(msg)           an output that could not be written: disk full, no permission (exit status 6)
+//   HALFETI_IO_ERROR(msg)           an output that could not be written: disk full, no permission (exit
+//   status 6)
 // `msg` is a stream expression: HALFETI_CHECK(n > 0, "n = " << n << " must be positive").
 #pragma once
 
@@ -61,10 +62,10 @@ namespace detail {
 
 #define HALFETI_STREAM_(msg) (static_cast<std::ostringstream&&>(std::ostringstream() << msg)).str()
 
-#define HALFETI_CHECK(cond, msg)                                                                       \
-  do {                                                                                                 \
-    if (!(cond))                                                                                       \
-      ::halfeti::detail::raise_internal(#cond, HALFETI_STREAM_(msg), __func__, __FILE__, __LINE__);   \
+#define HALFETI_CHECK(cond, msg)                                                                    \
+  do {                                                                                              \
+    if (!(cond))                                                                                    \
+      ::halfeti::detail::raise_internal(#cond, HALFETI_STREAM_(msg), __func__, __FILE__, __LINE__); \
   } while (0)
 
 #ifdef NDEBUG

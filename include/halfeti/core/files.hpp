@@ -1,4 +1,5 @@
-// What a path names on the file system, and its parts: the one home of these small questions for every module.
+// What a path names on the file system, and its parts: the one home of these small questions for every
+// module.
 #pragma once
 
 #include <string>

@@ -1,12 +1,12 @@
-// One registry per kind of named choice (excitation, probe, kernel, material ...): a name maps to the schema of
-// its own keys and to a factory. Adding a choice is one `add` call; the scene schema's choice list and variants
-// are built from the registry, so the two cannot disagree.
+// One registry per kind of named choice (excitation, probe, kernel, material ...): a name maps to the schema
+// of its own keys and to a factory. Adding a choice is one `add` call; the scene schema's choice list and
+// variants are built from the registry, so the two cannot disagree.
 #pragma once
 
 #include <functional>
+#include <initializer_list>
 #include <map>
 #include <memory>
-#include <initializer_list>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -25,7 +25,8 @@ class Registry {
     Factory make;
   };
 
-  Registry& add(const std::string& name, std::string doc, std::shared_ptr<const scene::Schema> keys, Factory make) {
+  Registry& add(const std::string& name, std::string doc, std::shared_ptr<const scene::Schema> keys,
+                Factory make) {
     HALFETI_CHECK(entries_.find(name) == entries_.end(), "registry entry '" << name << "' added twice");
     names_.push_back(name);
     entries_[name] = Entry{std::move(doc), std::move(keys), std::move(make)};
@@ -64,7 +65,8 @@ class Registry {
   std::map<std::string, Entry> entries_;
 };
 
-// A registry of plain named values (kernel, scheme, material ...): each entry's "factory" is the value itself.
+// A registry of plain named values (kernel, scheme, material ...): each entry's "factory" is the value
+// itself.
 template <class T>
 Registry<T> named_values(std::initializer_list<std::tuple<const char*, const char*, T>> entries) {
   Registry<T> r;

@@ -1,5 +1,6 @@
-// A resolved scene: the YAML tree after schema checking (every default filled), with typed read access, and the
-// collective loader (rank 0 reads, checks and broadcasts; every rank gets the same scene or the same error).
+// A resolved scene: the YAML tree after schema checking (every default filled), with typed read access, and
+// the collective loader (rank 0 reads, checks and broadcasts; every rank gets the same scene or the same
+// error).
 #pragma once
 
 #include <mpi.h>
@@ -40,8 +41,8 @@ class Node {
 };
 
 struct Scene {
-  std::string file;         // where it was read from
-  YAML::Node resolved;      // checked, defaults filled
+  std::string file;     // where it was read from
+  YAML::Node resolved;  // checked, defaults filled
   Node root() const { return Node(resolved, ""); }
   std::string resolved_text() const;  // YAML text that runs again as it is
 };

@@ -1,5 +1,5 @@
-// A small JSON value for summary.json and the cable tool's output: objects keep their insertion order so that the
-// files read top-down the way they were written.
+// A small JSON value for summary.json and the cable tool's output: objects keep their insertion order so that
+// the files read top-down the way they were written.
 #pragma once
 
 #include <map>
@@ -14,14 +14,14 @@ class Json {
   enum class Type { kNull, kBool, kNumber, kString, kArray, kObject };
 
   Json() = default;
-  Json(bool b) : type_(Type::kBool), bool_(b) {}  // NOLINT(runtime/explicit)
-  Json(double x) : type_(Type::kNumber), number_(x) {}  // NOLINT
-  Json(int x) : type_(Type::kNumber), number_(x) {}  // NOLINT
-  Json(long x) : type_(Type::kNumber), number_(static_cast<double>(x)) {}  // NOLINT
+  Json(bool b) : type_(Type::kBool), bool_(b) {}                                // NOLINT(runtime/explicit)
+  Json(double x) : type_(Type::kNumber), number_(x) {}                          // NOLINT
+  Json(int x) : type_(Type::kNumber), number_(x) {}                             // NOLINT
+  Json(long x) : type_(Type::kNumber), number_(static_cast<double>(x)) {}       // NOLINT
   Json(long long x) : type_(Type::kNumber), number_(static_cast<double>(x)) {}  // NOLINT
   Json(unsigned long x) : type_(Type::kNumber), number_(static_cast<double>(x)) {}  // NOLINT
-  Json(const char* s) : type_(Type::kString), string_(s) {}  // NOLINT
-  Json(std::string s) : type_(Type::kString), string_(std::move(s)) {}  // NOLINT
+  Json(const char* s) : type_(Type::kString), string_(s) {}                         // NOLINT
+  Json(std::string s) : type_(Type::kString), string_(std::move(s)) {}              // NOLINT
 
   static Json array() {
     Json j;

@@ -51,8 +51,8 @@ struct Q9Geometry {
 struct Q9Options {
   PlaneHypothesis hypothesis = PlaneHypothesis::kPlaneStrain;
   bool selective_reduced_integration = true;  // applies in plane strain only
-  // Neo-Hookean in plane strain (the default) uses a closed-form kernel (see q9_element.cpp); false forces the
-  // general material path everywhere (tests compare the two).
+  // Neo-Hookean in plane strain (the default) uses a closed-form kernel (see q9_element.cpp); false forces
+  // the general material path everywhere (tests compare the two).
   bool specialised_kernel = true;
 };
 
@@ -72,8 +72,8 @@ class HyperelasticQ9 {
                                   Q9Matrix& tangent) const;
   // The same tangent in component-major order: row/column 9 i + a is component i of node a (all four 9x9
   // blocks filled). The assembly reads this form directly.
-  void internal_force_and_tangent_component_major(const Q9Geometry& g, const Q9Coordinates& u, Q9Vector& force,
-                                                  Q9Matrix& component_major) const;
+  void internal_force_and_tangent_component_major(const Q9Geometry& g, const Q9Coordinates& u,
+                                                  Q9Vector& force, Q9Matrix& component_major) const;
   // Consistent mass as a 9x9 scalar matrix (the same for x and y): M_ab = rho int N_a N_b dA.
   static Eigen::Matrix<double, kQ9Nodes, kQ9Nodes> scalar_mass(const Q9Geometry& g, double density);
   // Cauchy stress (Voigt [11, 22, 12, 33]) at each 3x3 point, for probes.

@@ -1,17 +1,17 @@
 // The program's commands end to end: exit statuses, --set, outputs of a run, the probe registry.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
-#include <sys/wait.h>
 
 #include "halfeti/app/cli.hpp"
 #include "halfeti/app/probes.hpp"
 #include "halfeti/app/scene_schema.hpp"
 #include "halfeti/core/error.hpp"
-#include "halfeti/io/run_log.hpp"
 #include "halfeti/io/probe_writer.hpp"
+#include "halfeti/io/run_log.hpp"
 
 using namespace halfeti;
 
@@ -58,13 +58,15 @@ TEST(Commands, ExitStatuses) {
   EXPECT_EQ(status_of("run"), 2);
   EXPECT_EQ(status_of("run " + scene + " --bogus"), 2);
   EXPECT_EQ(status_of("check " + kDir + "/no_such_scene.yaml"), 2);
-  EXPECT_EQ(file_text(kDir + "/err.txt"),
-            "halfeti: error: cannot open scene file '" + kDir + "/no_such_scene.yaml': no such file or not readable\n");
+  EXPECT_EQ(file_text(kDir + "/err.txt"), "halfeti: error: cannot open scene file '" + kDir +
+                                              "/no_such_scene.yaml': no such file or not readable\n");
   EXPECT_EQ(status_of("check " + scene + " --set excitation.period=-1"), 2);
   EXPECT_EQ(status_of("run " + scene + " --out /proc/forbidden/out"), 2);
-  // A folder for a scene, and --set through a value: bad input, one line (once a yaml-cpp exception, status 4).
+  // A folder for a scene, and --set through a value: bad input, one line (once a yaml-cpp exception, status
+  // 4).
   EXPECT_EQ(status_of("run " + kDir), 2);
-  EXPECT_EQ(file_text(kDir + "/err.txt"), "halfeti: error: scene file '" + kDir + "' is a folder; give the scene's .yaml file\n");
+  EXPECT_EQ(file_text(kDir + "/err.txt"),
+            "halfeti: error: scene file '" + kDir + "' is a folder; give the scene's .yaml file\n");
   EXPECT_EQ(status_of("check " + scene + " --set scene.end_time.x=1"), 2);
   EXPECT_EQ(file_text(kDir + "/err.txt"),
             "halfeti: error: --set scene.end_time.x=1: 'scene.end_time' holds a value, not a section\n");
@@ -81,10 +83,12 @@ TEST(Commands, CheckPrintsTheSizeAndRefusesARunTooBigForTheMachine) {
   EXPECT_NE(file_text(kDir + "/out.txt").find("ok; about 13333 particles, 120 plate elements (1210 dofs), "),
             std::string::npos)
       << file_text(kDir + "/out.txt");
-  // dx = 0.1 um: 3e12 particles, about 3e6 GB: refused before anything is allocated (it once died after 29 s).
+  // dx = 0.1 um: 3e12 particles, about 3e6 GB: refused before anything is allocated (it once died after 29
+  // s).
   EXPECT_EQ(status_of("check " + scene + " --set fluid.spacing=1e-7"), 2);
-  EXPECT_NE(file_text(kDir + "/err.txt").find("fluid.spacing: the run would need about 3000000000000 particles"),
-            std::string::npos)
+  EXPECT_NE(
+      file_text(kDir + "/err.txt").find("fluid.spacing: the run would need about 3000000000000 particles"),
+      std::string::npos)
       << file_text(kDir + "/err.txt");
   EXPECT_EQ(status_of("run " + scene + " --out " + kDir + "/huge --overwrite --set fluid.spacing=1e-7"), 2);
 }
@@ -93,15 +97,18 @@ TEST(Commands, HelpAfterACommandAndSchedulesFinerThanAStepEnd) {
   EXPECT_EQ(status_of("run --help"), 0);
   EXPECT_NE(file_text(kDir + "/out.txt").find("--restart"), std::string::npos);
   EXPECT_EQ(status_of("check --help"), 0);
-  // An end time or an output interval far below the time step (here 1e-300 s) once kept the schedule loop adding
-  // an interval that no longer changed the next time: the run must end (ctest's timeout would catch a hang).
+  // An end time or an output interval far below the time step (here 1e-300 s) once kept the schedule loop
+  // adding an interval that no longer changed the next time: the run must end (ctest's timeout would catch a
+  // hang).
   const std::string scene = write_scene("tiny.yaml", kPulseScene);
   const std::string out = kDir + "/tiny_out";
   EXPECT_EQ(status_of("run " + scene + " --out " + out + " --overwrite --set scene.end_time=1e-300"), 0);
-  EXPECT_EQ(status_of("run " + scene + " --out " + out + " --overwrite --set output.probe_interval=1e-300 "
+  EXPECT_EQ(status_of("run " + scene + " --out " + out +
+                      " --overwrite --set output.probe_interval=1e-300 "
                       "--set scene.end_time=1e-300"),
             0);
-  EXPECT_EQ(status_of("run " + scene + " --out " + out + " --overwrite --set output.field_interval=1e-300 "
+  EXPECT_EQ(status_of("run " + scene + " --out " + out +
+                      " --overwrite --set output.field_interval=1e-300 "
                       "--set output.checkpoint_interval=1e-300 --set output.progress_interval=1e-300 "
                       "--set scene.end_time=1e-3"),
             0);
@@ -116,7 +123,8 @@ TEST(Commands, RunWritesProbesSummaryLogAndResolvedScene) {
   ASSERT_EQ(probes.names, (std::vector<std::string>{"t", "ag"}));
   ASSERT_EQ(probes.rows.size(), 51u);  // t = 0, 0.01, ..., 0.5
   EXPECT_NEAR(probes.column("t").back(), 0.5, 1e-12);
-  EXPECT_NEAR(probes.column("ag")[5], 2.0, 1e-9);  // the override took effect: cosine peak at the start, 0.05 s
+  EXPECT_NEAR(probes.column("ag")[5], 2.0,
+              1e-9);  // the override took effect: cosine peak at the start, 0.05 s
   EXPECT_EQ(probes.column("ag")[0], 0.0);
   const std::string summary = file_text(out + "/summary.json");
   for (const char* key : {"\"scene\": \"pulse\"", "\"ranks\": 1", "\"steps\": 50", "\"simulated_time\": 0.5",
@@ -132,8 +140,8 @@ TEST(Commands, RunWritesProbesSummaryLogAndResolvedScene) {
 }
 
 TEST(Commands, CommandLineParsing) {
-  const auto c = app::parse_command_line({"run", "a.yaml", "--set", "x.y=1", "--set=z=2", "--out", "o", "--",
-                                          "-structure_ksp_type", "gmres"});
+  const auto c = app::parse_command_line(
+      {"run", "a.yaml", "--set", "x.y=1", "--set=z=2", "--out", "o", "--", "-structure_ksp_type", "gmres"});
   EXPECT_EQ(c.kind, app::Command::Kind::kRun);
   EXPECT_EQ(c.scene, "a.yaml");
   EXPECT_EQ(c.overrides, (std::vector<std::string>{"x.y=1", "z=2"}));
@@ -169,10 +177,12 @@ TEST(Commands, SceneReferencePageIsCurrent) {
   int line = 0;
   while (true) {
     ++line;
-    const bool more_a = static_cast<bool>(std::getline(a, la)), more_b = static_cast<bool>(std::getline(b, lb));
+    const bool more_a = static_cast<bool>(std::getline(a, la)),
+               more_b = static_cast<bool>(std::getline(b, lb));
     if (!more_a && !more_b) break;
     if (la != lb || more_a != more_b) break;
   }
-  ADD_FAILURE() << "docs/scene-reference.md is stale (regenerate it, see the comment above); first difference at line "
-                << line << ":\n  generated:  " << la << "\n  checked in: " << lb;
+  ADD_FAILURE()
+      << "docs/scene-reference.md is stale (regenerate it, see the comment above); first difference at line "
+      << line << ":\n  generated:  " << la << "\n  checked in: " << lb;
 }

@@ -1,9 +1,9 @@
-// Restart from a checkpoint through the program (mpirun, as a user runs it): a run stopped at some step and continued
-// with --restart is bit for bit the run that never stopped, on the same rank count and on another (1 -> 2, 3 -> 1,
-// 4 -> 2), for the water alone and for the coupled paper scene with cables; the stops a cluster job meets (a
-// signal, --max-wall) leave a checkpoint and a summary that say so; a restart that would change the physics, a
-// folder that holds another run, a file that is no checkpoint are one clear error each; a full disk is an I/O error
-// (exit status 6) naming the file and the reason, with no half-written file left.
+// Restart from a checkpoint through the program (mpirun, as a user runs it): a run stopped at some step and
+// continued with --restart is bit for bit the run that never stopped, on the same rank count and on another
+// (1 -> 2, 3 -> 1, 4 -> 2), for the water alone and for the coupled paper scene with cables; the stops a
+// cluster job meets (a signal, --max-wall) leave a checkpoint and a summary that say so; a restart that would
+// change the physics, a folder that holds another run, a file that is no checkpoint are one clear error each;
+// a full disk is an I/O error (exit status 6) naming the file and the reason, with no half-written file left.
 #include <gtest/gtest.h>
 #include <sys/mount.h>
 #include <sys/stat.h>
@@ -25,31 +25,36 @@ struct Case {
   double end, middle;  // s: the run's end, and where the first leg of a restarted run stops
 };
 
-// The water alone: the Martin & Moyce dam break at a / 12.5 (about 300 particles), through the surge's impact.
-const Case kWater{test::source_path("inputs/validation/dambreak.yaml"),
-                  "--set fluid.spacing=0.004572 --set output.field_interval=0.05 --set output.checkpoint_keep=0",
-                  0.2, 0.1};
+// The water alone: the Martin & Moyce dam break at a / 12.5 (about 300 particles), through the surge's
+// impact.
+const Case kWater{
+    test::source_path("inputs/validation/dambreak.yaml"),
+    "--set fluid.spacing=0.004572 --set output.field_interval=0.05 --set output.checkpoint_keep=0", 0.2, 0.1};
 // The paper's rubber plate with two cable sets under the cosine pulse, water at dx = 6 mm (837 particles).
-const Case kCoupled{test::source_path("inputs/paper/cosine_cable.yaml"),
-                    "--set fluid.spacing=0.006 --set output.field_interval=0.05 --set output.checkpoint_keep=0", 0.1,
-                    0.05};
+const Case kCoupled{
+    test::source_path("inputs/paper/cosine_cable.yaml"),
+    "--set fluid.spacing=0.006 --set output.field_interval=0.05 --set output.checkpoint_keep=0", 0.1, 0.05};
 
-// The same with the plate-water exchange converged within each step and the trapezoidal rule (docs/coupling.md,
-// section 16): a step repeated from its saved start, and the forces of the next step computed at this one's end.
+// The same with the plate-water exchange converged within each step and the trapezoidal rule
+// (docs/coupling.md, section 16): a step repeated from its saved start, and the forces of the next step
+// computed at this one's end.
 const Case kImplicit{kCoupled.scene,
-                     kCoupled.args + " --set coupling.plate_wall_exchange=implicit --set coupling.added_mass=none"
-                                     " --set structure.newmark_gamma=0.5 --set structure.newmark_beta=0.25",
+                     kCoupled.args +
+                         " --set coupling.plate_wall_exchange=implicit --set coupling.added_mass=none"
+                         " --set structure.newmark_gamma=0.5 --set structure.newmark_beta=0.25",
                      0.1, 0.05};
 
-std::string end_time(double t) { return " --set scene.end_time=" + std::to_string(t); }
+std::string end_time(double t) {
+  return " --set scene.end_time=" + std::to_string(t);
+}
 
 std::string latest(const std::string& run) {
   const auto all = io::list_checkpoints(run + "/checkpoints");
   return all.empty() ? std::string() : all.back();
 }
 
-// Every number of the two checkpoints agrees bit for bit: the particles (matched by global id), the parts' state
-// and the health log; only the wall time spent so far (the run block's last entry) may differ.
+// Every number of the two checkpoints agrees bit for bit: the particles (matched by global id), the parts'
+// state and the health log; only the wall time spent so far (the run block's last entry) may differ.
 void expect_same_state(const std::string& a, const std::string& b) {
   ASSERT_FALSE(a.empty());
   ASSERT_FALSE(b.empty());
@@ -65,8 +70,9 @@ void expect_same_state(const std::string& a, const std::string& b) {
   const auto ox = order(x.particles.gid), oy = order(y.particles.gid);
   ASSERT_EQ(ox.size(), oy.size());
   const std::pair<const std::vector<double>*, const std::vector<double>*> fields[] = {
-      {&x.particles.x, &y.particles.x},   {&x.particles.y, &y.particles.y},     {&x.particles.vx, &y.particles.vx},
-      {&x.particles.vy, &y.particles.vy}, {&x.particles.rho, &y.particles.rho}, {&x.particles.mass, &y.particles.mass}};
+      {&x.particles.x, &y.particles.x},     {&x.particles.y, &y.particles.y},
+      {&x.particles.vx, &y.particles.vx},   {&x.particles.vy, &y.particles.vy},
+      {&x.particles.rho, &y.particles.rho}, {&x.particles.mass, &y.particles.mass}};
   int differing = 0;
   for (std::size_t k = 0; k < ox.size(); ++k) {
     EXPECT_EQ(x.particles.gid[ox[k]], y.particles.gid[oy[k]]);
@@ -90,22 +96,26 @@ void expect_same_state(const std::string& a, const std::string& b) {
   }
 }
 
-// The reference run (np 2, never stopped), then for each rank pair a first leg to the middle and a second leg from
-// its checkpoint, into another folder, to the end.
+// The reference run (np 2, never stopped), then for each rank pair a first leg to the middle and a second leg
+// from its checkpoint, into another folder, to the end.
 void expect_restarts_bit_for_bit(const Case& c, const std::string& name) {
   const std::string ref = test::binary_path("restart_" + name + "_ref");
-  ASSERT_EQ(test::run_scene(c.scene, ref, c.args + end_time(c.end), 2), 0) << test::read_text(ref + ".stderr");
+  ASSERT_EQ(test::run_scene(c.scene, ref, c.args + end_time(c.end), 2), 0)
+      << test::read_text(ref + ".stderr");
   for (const auto& [first, second] : std::vector<std::pair<int, int>>{{1, 2}, {3, 1}, {4, 2}}) {
     const std::string tag = name + "_" + std::to_string(first) + "to" + std::to_string(second);
-    const std::string leg1 = test::binary_path("restart_" + tag + "_a"), leg2 = test::binary_path("restart_" + tag + "_b");
-    ASSERT_EQ(test::run_scene(c.scene, leg1, c.args + end_time(c.middle), first), 0) << test::read_text(leg1 + ".stderr");
+    const std::string leg1 = test::binary_path("restart_" + tag + "_a"),
+                      leg2 = test::binary_path("restart_" + tag + "_b");
+    ASSERT_EQ(test::run_scene(c.scene, leg1, c.args + end_time(c.middle), first), 0)
+        << test::read_text(leg1 + ".stderr");
     ASSERT_EQ(test::run_scene(c.scene, leg2, c.args + end_time(c.end) + " --restart " + leg1, second), 0)
         << test::read_text(leg2 + ".stderr");
     SCOPED_TRACE(tag);
     expect_same_state(latest(ref), latest(leg2));
     // probes.csv: the rows before the checkpoint carried from the first leg's folder, the rest written anew.
     EXPECT_EQ(test::read_text(leg2 + "/probes.csv"), test::read_text(ref + "/probes.csv"));
-    EXPECT_NE(test::read_text(leg2 + "/summary.json").find("\"restarted_from\": \"" + latest(leg1)), std::string::npos);
+    EXPECT_NE(test::read_text(leg2 + "/summary.json").find("\"restarted_from\": \"" + latest(leg1)),
+              std::string::npos);
   }
 }
 
@@ -119,7 +129,9 @@ std::string summary_status(const std::string& run) {
 
 }  // namespace
 
-TEST(Restart, WaterAloneContinuesBitForBitOnOtherRankCounts) { expect_restarts_bit_for_bit(kWater, "water"); }
+TEST(Restart, WaterAloneContinuesBitForBitOnOtherRankCounts) {
+  expect_restarts_bit_for_bit(kWater, "water");
+}
 
 TEST(Restart, CoupledSceneWithCablesContinuesBitForBitOnOtherRankCounts) {
   expect_restarts_bit_for_bit(kCoupled, "coupled");
@@ -136,18 +148,20 @@ TEST(Restart, ConvergedExchangeContinuesBitForBitOnOtherRankCounts) {
 
 TEST(Restart, MaxWallStopsResumablyAndTheRunContinuesInItsOwnFolder) {
   // --max-wall far below one step's cost stops the run after its first step: exit status 5, a checkpoint, the
-  // summary "stopped". Continued twice in the same folder (the second leg stopped the same way), the run ends as
-  // the one that never stopped: its state, its probes.csv and its field series.
+  // summary "stopped". Continued twice in the same folder (the second leg stopped the same way), the run ends
+  // as the one that never stopped: its state, its probes.csv and its field series.
   const Case& c = kCoupled;
   const std::string ref = test::binary_path("restart_wall_ref"), run = test::binary_path("restart_wall");
-  ASSERT_EQ(test::run_scene(c.scene, ref, c.args + end_time(c.end), 2), 0) << test::read_text(ref + ".stderr");
+  ASSERT_EQ(test::run_scene(c.scene, ref, c.args + end_time(c.end), 2), 0)
+      << test::read_text(ref + ".stderr");
   ASSERT_EQ(test::run_scene(c.scene, run, c.args + end_time(c.end) + " --max-wall 1e-6", 2), 5)
       << test::read_text(run + ".stderr");
   EXPECT_EQ(summary_status(run), "stopped");
   const std::string log = test::read_text(run + "/log.txt");
   EXPECT_NE(log.find("stopped: the wall-time limit (--max-wall 1e-06 s) at t = "), std::string::npos) << log;
   EXPECT_NE(log.find("continue with: halfeti run"), std::string::npos) << log;
-  ASSERT_EQ(test::run_scene(c.scene, run, c.args + end_time(c.end) + " --max-wall 1e-6 --restart " + run, 2), 5)
+  ASSERT_EQ(test::run_scene(c.scene, run, c.args + end_time(c.end) + " --max-wall 1e-6 --restart " + run, 2),
+            5)
       << test::read_text(run + ".stderr");
   ASSERT_EQ(test::run_scene(c.scene, run, c.args + end_time(c.end) + " --restart " + run, 1), 0)
       << test::read_text(run + ".stderr");
@@ -165,11 +179,12 @@ TEST(Restart, MaxWallStopsResumablyAndTheRunContinuesInItsOwnFolder) {
 TEST(Restart, SigtermStopsAtAStepBoundaryWithACheckpoint) {
   // One process (no mpirun in between): SIGTERM once the run is under way.
   const std::string run = test::binary_path("restart_sigterm");
-  const std::string cmd = "rm -rf " + run + " && (" + test::binary_path("src/app/halfeti") + " run " + kCoupled.scene +
-                          " --out " + run + " " + kCoupled.args + end_time(1.5) + " >" + run +
-                          ".stdout 2>&1 & pid=$!; for i in $(seq 600); do grep -q 'step' " + run +
-                          "/log.txt 2>/dev/null && break; sleep 0.05; done; kill -TERM $pid; wait $pid; echo $? >" +
-                          run + ".status)";
+  const std::string cmd =
+      "rm -rf " + run + " && (" + test::binary_path("src/app/halfeti") + " run " + kCoupled.scene +
+      " --out " + run + " " + kCoupled.args + end_time(1.5) + " >" + run +
+      ".stdout 2>&1 & pid=$!; for i in $(seq 600); do grep -q 'step' " + run +
+      "/log.txt 2>/dev/null && break; sleep 0.05; done; kill -TERM $pid; wait $pid; echo $? >" + run +
+      ".status)";
   ASSERT_EQ(std::system(cmd.c_str()), 0);
   EXPECT_EQ(test::read_text(run + ".status"), "5\n") << test::read_text(run + ".stdout");
   EXPECT_EQ(summary_status(run), "stopped");
@@ -187,27 +202,38 @@ TEST(Restart, RefusesWhatCannotContinue) {
   ASSERT_EQ(test::run_scene(c.scene, run, c.args + end_time(0.01), 1), 0) << test::read_text(run + ".stderr");
   const std::string bin = test::binary_path("src/app/halfeti");
   const auto attempt = [&](const std::string& args, const std::string& out) {
-    const std::string cmd = bin + " run " + c.scene + " " + c.args + " " + args + " >" + out + ".stdout 2>" + out + ".stderr";
+    const std::string cmd =
+        bin + " run " + c.scene + " " + c.args + " " + args + " >" + out + ".stdout 2>" + out + ".stderr";
     const int raw = std::system(cmd.c_str());
     return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
   };
   const std::string other = test::binary_path("restart_refusals_other");
   // A physics key changed: refused, the key named.
-  EXPECT_EQ(attempt(end_time(0.02) + " --set fluid.sound_speed=31 --restart " + run + " --out " + other + " --overwrite", other), 2);
-  EXPECT_NE(test::read_text(other + ".stderr").find("the scene changes fluid.sound_speed (checkpoint 30.0, now 31)"),
+  EXPECT_EQ(attempt(end_time(0.02) + " --set fluid.sound_speed=31 --restart " + run + " --out " + other +
+                        " --overwrite",
+                    other),
+            2);
+  EXPECT_NE(test::read_text(other + ".stderr")
+                .find("the scene changes fluid.sound_speed (checkpoint 30.0, now 31)"),
             std::string::npos)
       << test::read_text(other + ".stderr");
   // Nothing left to run.
   EXPECT_EQ(attempt(end_time(0.01) + " --restart " + run + " --out " + other + " --overwrite", other), 2);
   EXPECT_NE(test::read_text(other + ".stderr").find("not before scene.end_time"), std::string::npos);
   // A field file is not a checkpoint; a missing path is not one either.
-  EXPECT_EQ(attempt(end_time(0.02) + " --restart " + run + "/fields/fluid_000000.h5 --out " + other + " --overwrite", other), 2);
+  EXPECT_EQ(attempt(end_time(0.02) + " --restart " + run + "/fields/fluid_000000.h5 --out " + other +
+                        " --overwrite",
+                    other),
+            2);
   EXPECT_NE(test::read_text(other + ".stderr").find("is not a halfeti checkpoint"), std::string::npos);
-  EXPECT_EQ(attempt(end_time(0.02) + " --restart " + run + "/no_such --out " + other + " --overwrite", other), 2);
-  EXPECT_NE(test::read_text(other + ".stderr").find("is neither a checkpoint nor a folder"), std::string::npos);
+  EXPECT_EQ(attempt(end_time(0.02) + " --restart " + run + "/no_such --out " + other + " --overwrite", other),
+            2);
+  EXPECT_NE(test::read_text(other + ".stderr").find("is neither a checkpoint nor a folder"),
+            std::string::npos);
   // A folder that holds another run: refused without --overwrite, its summary untouched.
   EXPECT_EQ(attempt(end_time(0.01) + " --out " + run, run + "_again"), 2);
-  EXPECT_NE(test::read_text(run + "_again.stderr").find("holds the outputs of another run"), std::string::npos);
+  EXPECT_NE(test::read_text(run + "_again.stderr").find("holds the outputs of another run"),
+            std::string::npos);
   EXPECT_EQ(summary_status(run), "ok");
 }
 
@@ -220,9 +246,9 @@ TEST(Restart, AFullDiskIsAnIoErrorNamingTheFileWithNoPartialFileLeft) {
       << "mounting a small tmpfs at " << mnt << " failed: " << std::strerror(errno);
   const std::string run = mnt + "/run", log = test::binary_path("restart_tmpfs");  // the messages outside it
   const std::string cmd = test::source_path("tests/support/clean-mpirun") + " -n 2 " +
-                          test::binary_path("src/app/halfeti") + " run " + kCoupled.scene + " --out " + run + " " +
-                          kCoupled.args + end_time(0.3) + " --set output.field_interval=0.01 >" + log + ".stdout 2>" +
-                          log + ".stderr";
+                          test::binary_path("src/app/halfeti") + " run " + kCoupled.scene + " --out " + run +
+                          " " + kCoupled.args + end_time(0.3) + " --set output.field_interval=0.01 >" + log +
+                          ".stdout 2>" + log + ".stderr";
   const int raw = std::system(cmd.c_str());
   const int status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
   const std::string err = test::read_text(log + ".stderr");

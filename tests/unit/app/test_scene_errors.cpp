@@ -1,15 +1,15 @@
-// The table of malformed scenes: each must be answered by `halfeti check` with one line naming file, line, key,
-// what was found and what was expected (exit status 2).
+// The table of malformed scenes: each must be answered by `halfeti check` with one line naming file, line,
+// key, what was found and what was expected (exit status 2).
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <cstdlib>
 #include <fstream>
-#include <sys/wait.h>
 
 #include "halfeti/app/scene_schema.hpp"
 #include "halfeti/core/error.hpp"
-#include "halfeti/io/run_log.hpp"
 #include "halfeti/core/scene.hpp"
+#include "halfeti/io/run_log.hpp"
 
 using namespace halfeti;
 
@@ -24,19 +24,22 @@ struct Case {
 const char* kGood = "scene: {name: s, end_time: 1}\n";
 
 const Case kCases[] = {
-    {"missing section", "output: {probe_interval: 0.01}\n", "bad.yaml:1:1: scene: required key missing: expected a section (key: value lines)"},
+    {"missing section", "output: {probe_interval: 0.01}\n",
+     "bad.yaml:1:1: scene: required key missing: expected a section (key: value lines)"},
     {"negative end time", "scene: {name: s, end_time: -2}\n",
      "bad.yaml:1:28: scene.end_time: expected a number > 0 and <= 10000 (s), found '-2'"},
     {"text for a number", "scene: {name: s, end_time: soon}\n",
      "bad.yaml:1:28: scene.end_time: expected a number > 0 and <= 10000 (s), found 'soon'"},
-    {"near-miss key", "scene: {name: s, end_tme: 1}\n", "bad.yaml:1:18: unknown key 'scene.end_tme'; did you mean 'end_time'?"},
+    {"near-miss key", "scene: {name: s, end_tme: 1}\n",
+     "bad.yaml:1:18: unknown key 'scene.end_tme'; did you mean 'end_time'?"},
     {"unknown section", "scene: {name: s, end_time: 1}\nwather: {}\n",
      "bad.yaml:2:1: unknown key 'wather'; expected one of: scene, output, gravity, tank, excitation, fluid, "
      "structure, cables, coupling, probes"},
     {"near-miss section", "scene: {name: s, end_time: 1}\nfluids: {}\n",
      "bad.yaml:2:1: unknown key 'fluids'; did you mean 'fluid'?"},
     {"unknown choice", "scene: {name: s, end_time: 1}\nexcitation: {kind: sine}\n",
-     "bad.yaml:2:20: excitation.kind: expected one of none, sine_pulse, cosine_pulse, record, found 'sine'; did you mean 'none'?"},
+     "bad.yaml:2:20: excitation.kind: expected one of none, sine_pulse, cosine_pulse, record, found 'sine'; "
+     "did you mean 'none'?"},
     {"pulse without period", "scene: {name: s, end_time: 1}\nexcitation: {kind: sine_pulse, amplitude: 2}\n",
      "bad.yaml:2:13: excitation.period: required key missing: expected a number > 0 and <= 100 (s)"},
     {"key of another kind", "scene: {name: s, end_time: 1}\nexcitation: {kind: none, period: 1}\n",
@@ -66,13 +69,18 @@ const Case kCases[] = {
      "fluid: {spacing: 0.01, first_rank_share: 1.5, water: [{from: [0, 0], to: [0.3, 0.1]}]}\n",
      "bad.yaml:3:42: fluid.first_rank_share: expected a number > 0 and <= 1, found '1.5'"},
     {"unknown plate orientation",
-     "scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0], orientation: upside_down, time_step: 0.001}\n",
+     "scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0], orientation: upside_down, time_step: "
+     "0.001}\n",
      "bad.yaml:2:43: structure.orientation: expected one of standing, hanging, found 'upside_down'"},
-    {"incompressible rubber", "scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0], poisson_ratio: 0.5}\n",
+    {"incompressible rubber",
+     "scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0], poisson_ratio: 0.5}\n",
      "bad.yaml:2:45: structure.poisson_ratio: expected a number > -1 and <= 0.499, found '0.5'"},
-    {"nearly incompressible rubber", "scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0], poisson_ratio: 0.49999999}\n",
+    {"nearly incompressible rubber",
+     "scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0], poisson_ratio: 0.49999999}\n",
      "bad.yaml:2:45: structure.poisson_ratio: expected a number > -1 and <= 0.499, found '0.49999999'"},
-    {"a liquid denser than any", "scene: {name: s, end_time: 1}\nfluid: {spacing: 0.01, density: 1e308, water: [{from: [0, 0], to: [0.3, 0.1]}]}\n",
+    {"a liquid denser than any",
+     "scene: {name: s, end_time: 1}\nfluid: {spacing: 0.01, density: 1e308, water: [{from: [0, 0], to: [0.3, "
+     "0.1]}]}\n",
      "bad.yaml:2:33: fluid.density: expected a number > 0 and <= 20000 (kg/m^3), found '1e308'"},
     {"cable without area",
      "scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0]}\n"
@@ -84,9 +92,12 @@ const Case kCases[] = {
      "bad.yaml:2:30: coupling.added_mass_layer: expected a number in [0, 4] (dx), found '5'"},
     {"unknown interface added mass", "scene: {name: s, end_time: 1}\ncoupling: {added_mass: implicit}\n",
      "bad.yaml:2:24: coupling.added_mass: expected one of acoustic, layer, none, found 'implicit'"},
-    {"unknown plate-water exchange", "scene: {name: s, end_time: 1}\ncoupling: {plate_wall_exchange: converged}\n",
-     "bad.yaml:2:33: coupling.plate_wall_exchange: expected one of extrapolated, lagged, implicit, found 'converged'"},
-    {"broken YAML", "scene: {name: s, end_time: 1\n", "bad.yaml:2:1: not valid YAML: end of map flow not found"},
+    {"unknown plate-water exchange",
+     "scene: {name: s, end_time: 1}\ncoupling: {plate_wall_exchange: converged}\n",
+     "bad.yaml:2:33: coupling.plate_wall_exchange: expected one of extrapolated, lagged, implicit, found "
+     "'converged'"},
+    {"broken YAML", "scene: {name: s, end_time: 1\n",
+     "bad.yaml:2:1: not valid YAML: end of map flow not found"},
     {"not a mapping", "- a\n- b\n",
      "bad.yaml: a scene is a YAML mapping of sections (scene:, fluid:, ...), found something else"},
     {"a section twice", "scene: {name: s, end_time: 1}\nscene: {name: t, end_time: 2}\n",
@@ -98,7 +109,9 @@ const Case kCases[] = {
      "bad.yaml:3: key 'probes[0].name' appears twice in the same section (which one was meant?)"},
 };
 
-std::string halfeti_binary() { return std::string(HALFETI_BINARY_DIR) + "/src/app/halfeti"; }
+std::string halfeti_binary() {
+  return std::string(HALFETI_BINARY_DIR) + "/src/app/halfeti";
+}
 
 int run_and_capture(const std::string& args, std::string& stderr_text) {
   const std::string err = std::string(HALFETI_BINARY_DIR) + "/check_stderr.txt";
@@ -156,7 +169,8 @@ TEST(SceneErrors, EverySchemaErrorIsReportedInOnePass) {
               "bad.yaml:1:28: scene.end_time: expected a number > 0 and <= 10000 (s), found '-1'\n"
               "bad.yaml:2:21: unknown key 'tank.heigth'; did you mean 'height'?\n"
               "bad.yaml:4:5: probes[0].name: required key missing: expected a string\n"
-              "bad.yaml:5:42: unknown key 'probes[1].every' for kind 'ground_acceleration'; expected one of: name, kind\n"
+              "bad.yaml:5:42: unknown key 'probes[1].every' for kind 'ground_acceleration'; expected one of: "
+              "name, kind\n"
               "bad.yaml:6:26: output.probe_interval: expected a number > 0 (s), found '0'");
   }
   // A --set override's error comes first, then the text's.
@@ -171,8 +185,8 @@ TEST(SceneErrors, EverySchemaErrorIsReportedInOnePass) {
   }
   // Repeated keys: every one.
   try {
-    scene::parse_scene("scene: {name: s, name: t, end_time: 1}\ntank: {length: 1, length: 2}\n", "bad.yaml", {},
-                       *app::scene_schema());
+    scene::parse_scene("scene: {name: s, name: t, end_time: 1}\ntank: {length: 1, length: 2}\n", "bad.yaml",
+                       {}, *app::scene_schema());
     ADD_FAILURE() << "accepted";
   } catch (const UserError& e) {
     EXPECT_EQ(std::string(e.what()),
@@ -192,11 +206,16 @@ TEST(SceneErrors, ManyErrorsAreCappedWithACount) {
   std::string err;
   EXPECT_EQ(run_and_capture("check " + path, err), 2);
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 21) << err;
-  EXPECT_NE(err.find("halfeti: error: " + path + ":3:5: probes[0].name: required key missing"), std::string::npos) << err;
-  EXPECT_NE(err.find("halfeti: error: " + path + ":22:5: probes[19].name: required key missing"), std::string::npos)
+  EXPECT_NE(err.find("halfeti: error: " + path + ":3:5: probes[0].name: required key missing"),
+            std::string::npos)
+      << err;
+  EXPECT_NE(err.find("halfeti: error: " + path + ":22:5: probes[19].name: required key missing"),
+            std::string::npos)
       << err;
   EXPECT_EQ(err.find("probes[20]"), std::string::npos) << err;
-  EXPECT_NE(err.find("halfeti: error: " + path + ": 5 more errors not shown (25 in all)\n"), std::string::npos) << err;
+  EXPECT_NE(err.find("halfeti: error: " + path + ": 5 more errors not shown (25 in all)\n"),
+            std::string::npos)
+      << err;
 }
 
 TEST(SceneErrors, MaxMemoryRefusesAnOversizedScene) {
@@ -227,19 +246,22 @@ TEST(SceneErrors, ChecksAcrossKeysNameTheFileAndKey) {
       {"scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
        "fluid: {spacing: 0.01, water: [{from: [0, 0], to: [0.5, 0.1]}]}\n",
        "fluid.water[0]: water from [0, 0] to [0.5, 0.1] does not fit in the tank"},
-      {"scene: {name: s, end_time: 1}\nprobes: [{name: p, kind: displacement, node: top_left, component: x}]\n",
+      {"scene: {name: s, end_time: 1}\nprobes: [{name: p, kind: displacement, node: top_left, component: "
+       "x}]\n",
        "probes[0]: this probe reads the plate, but the scene has no `structure:` section"},
       {"scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0]}\n",
        "structure.time_step: required when the scene has no `fluid:`"},
       {"scene: {name: s, end_time: 1}\nexcitation: {kind: record, file: missing.csv}\n",
        "cannot open accelerogram"},
-      {"scene: {name: s, end_time: 1}\nexcitation: {kind: record, file: .}\n", "is a folder, not a record file"},
-      // A hanging plate (a gate) reaches down from its clamp: below the floor it does not fit; its nodes have the
-      // tank frame's names, so the standing plate's top_right is unknown.
+      {"scene: {name: s, end_time: 1}\nexcitation: {kind: record, file: .}\n",
+       "is a folder, not a record file"},
+      // A hanging plate (a gate) reaches down from its clamp: below the floor it does not fit; its nodes have
+      // the tank frame's names, so the standing plate's top_right is unknown.
       {"scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
        "structure: {base: [0.15, 0.05], orientation: hanging, height: 0.08, time_step: 0.001}\n",
        "structure: the plate (base [0.15, 0.05], 0.003 x 0.08 m) does not fit in the tank"},
-      {"scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0.1], orientation: hanging, time_step: 0.001}\n"
+      {"scene: {name: s, end_time: 1}\nstructure: {base: [0.15, 0.1], orientation: hanging, time_step: "
+       "0.001}\n"
        "probes: [{name: p, kind: displacement, node: top_right, component: x}]\n",
        "probes[0].node: no plate node named 'top_right'"},
       // The plate-water coupling's probes need water and a plate; the contact has no suction to split off.
@@ -251,17 +273,21 @@ TEST(SceneErrors, ChecksAcrossKeysNameTheFileAndKey) {
       {"scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
        "fluid: {spacing: 0.005, water: [{from: [0, 0], to: [0.3, 0.1]}]}\nstructure: {base: [0.15, 0]}\n"
        "coupling: {plate_wall_exchange: implicit}\n",
-       "coupling.added_mass: with plate_wall_exchange: implicit the water's response is converged within the step"},
+       "coupling.added_mass: with plate_wall_exchange: implicit the water's response is converged within the "
+       "step"},
       {"scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
        "fluid: {spacing: 0.005, water: [{from: [0, 0], to: [0.3, 0.1]}]}\nstructure: {base: [0.15, 0]}\n"
        "coupling: {plate_wall_exchange: implicit, added_mass: none, plate_wall: false}\n",
-       "coupling.plate_wall_exchange: implicit converges the plate-wall exchange; it needs coupling.plate_wall: true"},
+       "coupling.plate_wall_exchange: implicit converges the plate-wall exchange; it needs "
+       "coupling.plate_wall: true"},
       // A cable's anchor is on the tank: not outside it, not in mid-water.
-      {"scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\nstructure: {base: [0.15, 0], time_step: 0.001}\n"
+      {"scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\nstructure: {base: [0.15, 0], "
+       "time_step: 0.001}\n"
        "cables: [{name: a, anchor: [-1e300, 0.01], node: top_left, area: 1e-6, modulus: 1e6, density: 1000, "
        "initial_stress: 1e3}]\n",
        "cables[0].anchor: [-1e+300, 0.01] m is not on the tank's floor or a side wall"},
-      {"scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\nstructure: {base: [0.15, 0], time_step: 0.001}\n"
+      {"scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\nstructure: {base: [0.15, 0], "
+       "time_step: 0.001}\n"
        "cables: [{name: a, anchor: [0.1, 0.2], node: top_left, area: 1e-6, modulus: 1e6, density: 1000, "
        "initial_stress: 1e3}]\n",
        "cables[0].anchor: [0.1, 0.2] m is not on the tank's floor or a side wall"},

@@ -248,11 +248,15 @@ TEST(UnstretchedLength, InvertsTheEndTension) {
   EXPECT_THROW(unstretched_length_for_end_tension(a, b, ea, w, -1.0), UserError);
 }
 
-// The drawn shape: it starts and ends at the cable's ends, carries the end tensions of eq. 14, and its polyline is
-// as long as the stretched cable, the integral of 1 + T / EA over s0 (within the polyline's O(1/n^2) chord error:
-// 1e-3 at 64 segments). A slack heavy cable, a taut one, and one under a sideways load (the solver's rotated frame).
+// The drawn shape: it starts and ends at the cable's ends, carries the end tensions of eq. 14, and its
+// polyline is as long as the stretched cable, the integral of 1 + T / EA over s0 (within the polyline's
+// O(1/n^2) chord error: 1e-3 at 64 segments). A slack heavy cable, a taut one, and one under a sideways load
+// (the solver's rotated frame).
 TEST(CatenaryCurve, EndsAtTheEndsWithTheEndTensionsAndTheStretchedLength) {
-  struct Case { Eigen::Vector2d a, b; double l0, ea, w, side; };
+  struct Case {
+    Eigen::Vector2d a, b;
+    double l0, ea, w, side;
+  };
   for (const Case& c : {Case{{0.0, 0.0}, {1.0, 0.2}, 1.3, 50.0, 2.0, 0.0},
                         Case{{0.0, 0.0}, {-0.8, 0.5}, 0.9, 400.0, 1.0, 0.0},
                         Case{{0.2, 0.1}, {0.9, 0.4}, 1.0, 80.0, 1.5, 0.7}}) {

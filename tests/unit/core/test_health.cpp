@@ -1,4 +1,5 @@
-// The health log's bookkeeping (core/health.hpp): worst values by kind, the tally, the text form a checkpoint keeps.
+// The health log's bookkeeping (core/health.hpp): worst values by kind, the tally, the text form a checkpoint
+// keeps.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -34,8 +35,8 @@ TEST(Health, AnEpisodeKeepsItsWorstValueWhereAndWhen) {
 }
 
 TEST(Health, TheTallyCountsEpisodesByKindAndWarningsApartFromTheFailure) {
-  HealthLog log = {event("density_variation", 0.1, 10), event("spilled", 0.2, 20), event("density_variation", 0.3, 30),
-                   event("nan", 0.4, 40, true)};
+  HealthLog log = {event("density_variation", 0.1, 10), event("spilled", 0.2, 20),
+                   event("density_variation", 0.3, 30), event("nan", 0.4, 40, true)};
   health_observe(log[0], 0.02, 0.1, 10, 0, 0);
   health_observe(log[2], 0.05, 0.3, 30, 0, 0);
   const HealthTally t = tally(log);

@@ -54,9 +54,12 @@ TEST(Schema, AbsentSectionStaysAbsent) {
 }
 
 TEST(Schema, ErrorsNameFileLineKeyFoundAndExpected) {
-  EXPECT_EQ(error_of("fluid:\n  spacing: -1\n"), "t.yaml:2:12: fluid.spacing: expected a number > 0 (m), found '-1'");
-  EXPECT_EQ(error_of("fluid:\n  spacing: 1\n  delat: 0.2\n"), "t.yaml:3:3: unknown key 'fluid.delat'; did you mean 'delta'?");
-  EXPECT_EQ(error_of("fluid:\n  delta: 0.2\n"), "t.yaml:2:3: fluid.spacing: required key missing: expected a number > 0 (m)");
+  EXPECT_EQ(error_of("fluid:\n  spacing: -1\n"),
+            "t.yaml:2:12: fluid.spacing: expected a number > 0 (m), found '-1'");
+  EXPECT_EQ(error_of("fluid:\n  spacing: 1\n  delat: 0.2\n"),
+            "t.yaml:3:3: unknown key 'fluid.delat'; did you mean 'delta'?");
+  EXPECT_EQ(error_of("fluid:\n  delta: 0.2\n"),
+            "t.yaml:2:3: fluid.spacing: required key missing: expected a number > 0 (m)");
   EXPECT_EQ(error_of("fluid: {spacing: 1, every: 2.5}\n"),
             "t.yaml:1:28: fluid.every: expected a whole number >= 1, found '2.5'");
   EXPECT_EQ(error_of("fluid: {spacing: 1, origin: [1]}\n"),
@@ -66,13 +69,15 @@ TEST(Schema, ErrorsNameFileLineKeyFoundAndExpected) {
 }
 
 TEST(Schema, OverridesGoThroughTheSameChecks) {
-  const auto s = scene::parse_scene("fluid: {spacing: 0.002}\n", "t.yaml", {"fluid.delta=0.3"}, *test_schema());
+  const auto s =
+      scene::parse_scene("fluid: {spacing: 0.002}\n", "t.yaml", {"fluid.delta=0.3"}, *test_schema());
   EXPECT_DOUBLE_EQ(s.root().section("fluid").real("delta"), 0.3);
   EXPECT_EQ(error_of("fluid: {spacing: 0.002}\n", {"fluid.delta=2"}),
             "--set fluid.delta=2: fluid.delta: expected a number in [0, 1], found '2'");
   EXPECT_EQ(error_of("fluid: {spacing: 0.002}\n", {"fluid.sheme=standard"}),
             "--set fluid.sheme=standard: unknown key 'fluid.sheme'; did you mean 'scheme'?");
-  EXPECT_NE(error_of("fluid: {spacing: 0.002}\n", {"fluid.delta"}).find("expected key.path=value"), std::string::npos);
+  EXPECT_NE(error_of("fluid: {spacing: 0.002}\n", {"fluid.delta"}).find("expected key.path=value"),
+            std::string::npos);
 }
 
 TEST(Schema, ClosestNameOnlyForNearMisses) {
@@ -96,7 +101,8 @@ TEST(Registry, VariantsComeFromTheRegistry) {
     scene::parse_scene("thing: {kind: two, value: 7}\n", "t.yaml", {}, *root);
     FAIL() << "a key of another variant was accepted";
   } catch (const UserError& e) {
-    EXPECT_EQ(std::string(e.what()), "t.yaml:1:20: unknown key 'thing.value' for kind 'two'; expected one of: kind");
+    EXPECT_EQ(std::string(e.what()),
+              "t.yaml:1:20: unknown key 'thing.value' for kind 'two'; expected one of: kind");
   }
   EXPECT_THROW(r.add("one", "again", one, nullptr), InternalError);
 }

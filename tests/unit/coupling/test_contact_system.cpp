@@ -87,7 +87,8 @@ hc::ContactSolveReport press(hs::PlateSolver& s, hc::ContactSystem& sys,
 TEST(ContactSystem, InvadersEndOnTheSurfaceTied) {
   hs::PlateSolver s(PETSC_COMM_SELF, plate(2, 20));
   // The paper's mass participation 2 m / dt^2 (the default is the fluid's kick-drift m / dt^2).
-  hc::ContactSystem sys(s, hc::ContactConstraint::kTied, "structure_contact_", hc::ContactSolver::kCondensed, 2.0);
+  hc::ContactSystem sys(s, hc::ContactConstraint::kTied, "structure_contact_", hc::ContactSolver::kCondensed,
+                        2.0);
   const auto inv = hc::testing::right_face_invaders(s, heights(12, 0.02, 0.078), 2e-4);
   const double dt = 1e-4;
   const auto report = press(s, sys, inv, dt);

@@ -1,9 +1,9 @@
-// The plate's faces in the SPH sums (src/sph/plate_wall.cpp, docs/coupling.md section 12): the ghosts must stand
-// exactly for what the plate takes out of a particle's kernel support, beside a face, above the top and round a
-// corner alike. Checked on the paper's geometry (dx 1.5 mm, plate 3 mm x 8 cm, 2 x 60 Q9 surface) with the water
-// lattice the fluid starts from: the kernel sum over the real water the particle sees (pairs crossing the plate's
-// mid-line dropped) plus the ghosts must be a partition of unity, and the first moment (the pressure force at
-// uniform pressure) must vanish.
+// The plate's faces in the SPH sums (src/sph/plate_wall.cpp, docs/coupling.md section 12): the ghosts must
+// stand exactly for what the plate takes out of a particle's kernel support, beside a face, above the top and
+// round a corner alike. Checked on the paper's geometry (dx 1.5 mm, plate 3 mm x 8 cm, 2 x 60 Q9 surface)
+// with the water lattice the fluid starts from: the kernel sum over the real water the particle sees (pairs
+// crossing the plate's mid-line dropped) plus the ghosts must be a partition of unity, and the first moment
+// (the pressure force at uniform pressure) must vanish.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,8 +17,8 @@
 namespace halfeti::sph {
 namespace {
 
-// The paper's faces lie on lattice lines at dx 1.5 mm (99 and 101 dx); its top at 80 mm does not (53.33 dx), and the
-// lattice then sees the top at 79.5 mm (LatticeOffsets::top = -0.5 mm).
+// The paper's faces lie on lattice lines at dx 1.5 mm (99 and 101 dx); its top at 80 mm does not (53.33 dx),
+// and the lattice then sees the top at 79.5 mm (LatticeOffsets::top = -0.5 mm).
 constexpr double kDx = 0.0015, kLeft = 0.1485, kRight = 0.1515;
 
 PlateOutline paper_outline(double kTop) {
@@ -27,9 +27,9 @@ PlateOutline paper_outline(double kTop) {
     o.x.push_back(x);
     o.y.push_back(y);
   };
-  for (int k = 0; k <= 120; ++k) add(kRight, kTop * k / 120.0);                   // up the right face
-  for (int j = 1; j <= 4; ++j) add(kRight - j * (kRight - kLeft) / 4.0, kTop);    // across the top
-  for (int k = 119; k >= 0; --k) add(kLeft, kTop * k / 120.0);                     // down the left face
+  for (int k = 0; k <= 120; ++k) add(kRight, kTop * k / 120.0);                 // up the right face
+  for (int j = 1; j <= 4; ++j) add(kRight - j * (kRight - kLeft) / 4.0, kTop);  // across the top
+  for (int k = 119; k >= 0; --k) add(kLeft, kTop * k / 120.0);                  // down the left face
   o.vx.assign(o.size(), 0.0);
   o.vy.assign(o.size(), 0.0);
   o.ax.assign(o.size(), 0.0);
@@ -55,7 +55,8 @@ class PlateWallSupport : public ::testing::Test {
     mid_ = wall_.midline();
     wx_.clear();
     wy_.clear();
-    for (int j = 0; j < 66; ++j)  // water lattice 0.3 m x 0.1 m, the plate's place (as the lattice sees it) empty
+    for (int j = 0; j < 66;
+         ++j)  // water lattice 0.3 m x 0.1 m, the plate's place (as the lattice sees it) empty
       for (int i = 0; i < 200; ++i) {
         const double x = (i + 0.5) * kDx, y = (j + 0.5) * kDx;
         if (x > kLeft && x < kRight && y < top + offset) continue;
@@ -138,12 +139,13 @@ TEST_F(PlateWallSupport, GhostsCompleteTheSupportBesideAFaceAboveTheTopAndRoundA
   }
 }
 
-
-// All water lattice points within 6 mm of the plate's top corners: the worst sum and first moment (dx times the
-// gradient sum), both within 0.004, a thirtieth of one neighbour's share w_dx ~ 0.12. Before the ghosts were laid in
-// lattice rows, the previous layout (rows behind each face, a particle seeing only its closest face's) gave 0.0046 and
-// 0.0088 for this top.
-TEST_F(PlateWallSupport, EveryLatticePointNearTheTopSeesACompleteSupport) { scan_near_the_top(); }
+// All water lattice points within 6 mm of the plate's top corners: the worst sum and first moment (dx times
+// the gradient sum), both within 0.004, a thirtieth of one neighbour's share w_dx ~ 0.12. Before the ghosts
+// were laid in lattice rows, the previous layout (rows behind each face, a particle seeing only its closest
+// face's) gave 0.0046 and 0.0088 for this top.
+TEST_F(PlateWallSupport, EveryLatticePointNearTheTopSeesACompleteSupport) {
+  scan_near_the_top();
+}
 
 TEST_F(PlateWallSupport, ThePapersTopOffTheLatticeIsSeenAtTheNearestLatticeLine) {
   build(0.08, -0.0005);  // 80 mm = 53.33 dx: the lattice sees 79.5 mm
@@ -157,24 +159,26 @@ void PlateWallSupport::scan_near_the_top() {
   const Sums ref = bulk();
   double worst_w = 0.0, worst_g = 0.0, at_w[2] = {0, 0}, at_g[2] = {0, 0};
   for (std::size_t j = 0; j < wx_.size(); ++j) {
-    const double dl = std::hypot(wx_[j] - kLeft, wy_[j] - kTop), dr = std::hypot(wx_[j] - kRight, wy_[j] - kTop);
+    const double dl = std::hypot(wx_[j] - kLeft, wy_[j] - kTop),
+                 dr = std::hypot(wx_[j] - kRight, wy_[j] - kTop);
     if (std::min(dl, dr) > 0.006) continue;
     const Sums s = sums(wx_[j], wy_[j]);
     const double ew = std::abs(s.w - ref.w), eg = std::hypot(s.gx - ref.gx, s.gy - ref.gy) * kDx;
     if (ew > worst_w) worst_w = ew, at_w[0] = wx_[j], at_w[1] = wy_[j];
     if (eg > worst_g) worst_g = eg, at_g[0] = wx_[j], at_g[1] = wy_[j];
   }
-  std::printf("near the top: worst |sum V W - bulk| = %.4f at (%.5f, %.5f); worst dx |sum V grad W| = %.4f at "
-              "(%.5f, %.5f)\n", worst_w, at_w[0], at_w[1], worst_g, at_g[0], at_g[1]);
+  std::printf(
+      "near the top: worst |sum V W - bulk| = %.4f at (%.5f, %.5f); worst dx |sum V grad W| = %.4f at "
+      "(%.5f, %.5f)\n",
+      worst_w, at_w[0], at_w[1], worst_g, at_g[0], at_g[1]);
   EXPECT_LT(worst_w, 0.004);
   EXPECT_LT(worst_g, 0.004);
 }
 
-
 TEST(PlateWallOffsets, ABentPlatesTopSlidesAlongItsFaces) {
-  // The paper's plate bent as x += c y^2 (tip 30 mm to the right), its top lowered by half a spacing: the corners
-  // slide 0.5 mm down their faces, so the top's middle moves 0.5 mm along the bent plate, and the faces keep
-  // pairing up (the layout is built without error).
+  // The paper's plate bent as x += c y^2 (tip 30 mm to the right), its top lowered by half a spacing: the
+  // corners slide 0.5 mm down their faces, so the top's middle moves 0.5 mm along the bent plate, and the
+  // faces keep pairing up (the layout is built without error).
   PlateOutline o = paper_outline(0.08);
   const double c = 0.03 / (0.08 * 0.08);
   for (std::size_t k = 0; k < o.size(); ++k) o.x[k] += c * o.y[k] * o.y[k];

@@ -12,7 +12,9 @@
 using namespace halfeti;
 
 namespace {
-double global_value(long long i, int field) { return 0.25 * static_cast<double>(i) + 1000.0 * field; }
+double global_value(long long i, int field) {
+  return 0.25 * static_cast<double>(i) + 1000.0 * field;
+}
 }  // namespace
 
 TEST(Fields, ParallelWriteSerialReadRoundTrip) {
@@ -97,10 +99,10 @@ TEST(Fields, MeshSeriesCarriesCells) {
   }
   io::CellBlock block{"Quadrilateral", 4, cells.data(), cells.size() / 4};
   io::FieldSeries series(MPI_COMM_WORLD, dir, "plate");
-  const std::string f = series.write(
-      1.0, x.size(), x.data(), y.data(),
-      {io::Field::scalar("ux", "m", u.data()), io::Field::scalar("von_mises", "Pa", stress.data(), io::Center::kCell)},
-      &block);
+  const std::string f = series.write(1.0, x.size(), x.data(), y.data(),
+                                     {io::Field::scalar("ux", "m", u.data()),
+                                      io::Field::scalar("von_mises", "Pa", stress.data(), io::Center::kCell)},
+                                     &block);
   MPI_Barrier(MPI_COMM_WORLD);
   const auto d = io::read_field_file(f);
   EXPECT_EQ(d.cells, (std::vector<std::int64_t>{0, 1, 4, 3, 1, 2, 5, 4}));

@@ -1,5 +1,5 @@
-// The error metrics' one home (io/metrics.hpp) on synthetic curves whose answers are known in closed form, and
-// `halfeti compare` (io/compare_tool.hpp) on a probes file and a reference file written here.
+// The error metrics' one home (io/metrics.hpp) on synthetic curves whose answers are known in closed form,
+// and `halfeti compare` (io/compare_tool.hpp) on a probes file and a reference file written here.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -28,8 +28,12 @@ Curve sampled(double (*f)(double), double t0, double t1, int n) {
   }
   return c;
 }
-double sine_2hz(double t) { return std::sin(2.0 * kPi * 2.0 * t); }
-double line(double t) { return 3.0 * t + 1.0; }
+double sine_2hz(double t) {
+  return std::sin(2.0 * kPi * 2.0 * t);
+}
+double line(double t) {
+  return 3.0 * t + 1.0;
+}
 }  // namespace
 
 TEST(Metrics, ValueAtIsLinearBetweenSamplesAndHeldBeyondTheEnds) {
@@ -49,7 +53,7 @@ TEST(Metrics, RmsOfAConstantOffsetIsTheOffsetAndCountsOnlyTheWindow) {
   ref.v[7] += 1.0;
   EXPECT_NEAR(io::rms_error(run, ref, Window{0.9, 1.0}), 0.75, 1e-12);
   EXPECT_NEAR(io::rms_error(run, ref), std::sqrt((7 * 0.25 * 0.25 + 0.75 * 0.75) / 8), 1e-12);
-  EXPECT_THROW(io::rms_error(run, ref, Window{2.0, 3.0}), UserError);   // no reference sample there
+  EXPECT_THROW(io::rms_error(run, ref, Window{2.0, 3.0}), UserError);  // no reference sample there
   // Relative: a run 10 % above the reference everywhere.
   Curve high = run;
   for (double& v : high.v) v *= 1.1;
@@ -68,7 +72,7 @@ TEST(Metrics, PeakAndItsTimeAndTheCrossingFrequencyOfASine) {
   // Four whole periods: upward crossings at 0.5, 1.0, 1.5 (and t = 0 is not a crossing from below).
   EXPECT_NEAR(io::crossing_frequency(c), 2.0, 1e-3);
   EXPECT_THROW(io::crossing_frequency(c, Window{0.0, 0.4}), UserError);  // one period has one crossing
-  EXPECT_NEAR(io::crossing_frequency(c, {}, 0.5), 2.0, 1e-3);  // a stated level instead of the mean
+  EXPECT_NEAR(io::crossing_frequency(c, {}, 0.5), 2.0, 1e-3);            // a stated level instead of the mean
   EXPECT_NEAR(io::mean_value(sampled(line, 0.0, 1.0, 10)), 2.5, 1e-12);
 }
 
@@ -117,14 +121,18 @@ TEST(Metrics, CompareToolPrintsTheMetricAsJson) {
   EXPECT_NE(out.str().find("\"relative\": 0.125"), std::string::npos) << out.str();
   // A closed form: the probe's peak 3 against 2.5, and its RMS about a constant 2 over its samples 1, 2, 3.
   std::ostringstream closed;
-  ASSERT_EQ(io::run_compare_tool({dir, "--probe", "x", "--metric", "peak", "--reference-value", "2.5"}, closed), 0);
+  ASSERT_EQ(
+      io::run_compare_tool({dir, "--probe", "x", "--metric", "peak", "--reference-value", "2.5"}, closed), 0);
   EXPECT_NE(closed.str().find("\"value\": 0.5"), std::string::npos) << closed.str();
   std::ostringstream closed_rms;
-  ASSERT_EQ(io::run_compare_tool({dir, "--probe", "x", "--metric", "rms", "--reference-value", "2"}, closed_rms), 0);
+  ASSERT_EQ(
+      io::run_compare_tool({dir, "--probe", "x", "--metric", "rms", "--reference-value", "2"}, closed_rms),
+      0);
   EXPECT_NE(closed_rms.str().find("\"value\": " + io::Json(std::sqrt(2.0 / 3.0)).dump()), std::string::npos)
       << closed_rms.str();
   std::ostringstream ignored;
   EXPECT_THROW(io::run_compare_tool({dir, "--probe", "y", "--metric", "peak"}, ignored), UserError);
   EXPECT_THROW(io::run_compare_tool({dir, "--probe", "x", "--metric", "rms"}, ignored), UserError);
-  EXPECT_THROW(io::run_compare_tool({dir, "--probe", "x", "--metric", "peak", "--window", "1"}, ignored), UserError);
+  EXPECT_THROW(io::run_compare_tool({dir, "--probe", "x", "--metric", "peak", "--window", "1"}, ignored),
+               UserError);
 }

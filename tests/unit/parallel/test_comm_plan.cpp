@@ -1,8 +1,7 @@
-// The neighbour-only communication plan on 1-4 ranks: the same items in the same places as MPI_Alltoallv gives,
-// for sparse patterns found by discovery (many rounds back to back, so a fast rank's next round cannot be taken
-// for the last) and for symmetric peer sets; messages go to the ranks that receive something only.
+// The neighbour-only communication plan on 1-4 ranks: the same items in the same places as MPI_Alltoallv
+// gives, for sparse patterns found by discovery (many rounds back to back, so a fast rank's next round cannot
+// be taken for the last) and for symmetric peer sets; messages go to the ranks that receive something only.
 #include <gtest/gtest.h>
-
 #include <mpi.h>
 
 #include <random>
@@ -13,13 +12,16 @@
 using namespace halfeti::parallel;
 
 namespace {
-// Items rank r sends to rank d in round k: a sparse pattern (about half the pairs empty), the same on every rank.
+// Items rank r sends to rank d in round k: a sparse pattern (about half the pairs empty), the same on every
+// rank.
 int pattern(int round, int r, int d, int size) {
   std::mt19937 rng(static_cast<unsigned>(1000 * round + 31 * r + d));
   const int n = static_cast<int>(rng() % 7);
   return (rng() % 2 == 0 && size > 1) ? 0 : n;
 }
-double item(int round, int r, int d, int j, int c) { return 1e6 * round + 1e4 * r + 100 * d + j + 0.25 * c; }
+double item(int round, int r, int d, int j, int c) {
+  return 1e6 * round + 1e4 * r + 100 * d + j + 0.25 * c;
+}
 }  // namespace
 
 TEST(CommPlan, DiscoveryGivesAlltoallvsLayoutRoundAfterRound) {
@@ -49,8 +51,8 @@ TEST(CommPlan, DiscoveryGivesAlltoallvsLayoutRoundAfterRound) {
     for (int r = 0; r < size; ++r) {
       counts[r] *= 2, displs[r] *= 2, rcounts[r] *= 2, rdispls[r] *= 2;
     }
-    MPI_Alltoallv(send.data(), counts.data(), displs.data(), MPI_DOUBLE, want.data(), rcounts.data(), rdispls.data(),
-                  MPI_DOUBLE, MPI_COMM_WORLD);
+    MPI_Alltoallv(send.data(), counts.data(), displs.data(), MPI_DOUBLE, want.data(), rcounts.data(),
+                  rdispls.data(), MPI_DOUBLE, MPI_COMM_WORLD);
     ASSERT_EQ(got, want) << "round " << round;
   }
   // Two messages (the count and the data) to each other rank that receives something, nothing else.
@@ -61,8 +63,8 @@ TEST(CommPlan, DiscoveryGivesAlltoallvsLayoutRoundAfterRound) {
 }
 
 TEST(CommPlan, HaloTalksToNeighbourRanksOnly) {
-  // A strip of cells split into one block per rank: each rank's neighbours are the blocks beside it (at most 2),
-  // whatever the rank count, and its halo messages a step are twice that (counts, then data).
+  // A strip of cells split into one block per rank: each rank's neighbours are the blocks beside it (at most
+  // 2), whatever the rank count, and its halo messages a step are twice that (counts, then data).
   int rank = 0, size = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &size);
@@ -82,8 +84,10 @@ TEST(CommPlan, HaloTalksToNeighbourRanksOnly) {
   std::vector<double> field(cells.begin(), cells.end());
   plan.update(field, cells.size());
   EXPECT_EQ(traffic.messages, static_cast<std::int64_t>(2 * peers.size()));
-  EXPECT_EQ(plan.ghost_count(), peers.size() * static_cast<std::size_t>(grid.ny));  // a column of cells a side
-  for (std::size_t k = cells.size(); k < field.size(); ++k) {  // ghosts: cells of the neighbours' edge columns
+  EXPECT_EQ(plan.ghost_count(),
+            peers.size() * static_cast<std::size_t>(grid.ny));  // a column of cells a side
+  for (std::size_t k = cells.size(); k < field.size();
+       ++k) {  // ghosts: cells of the neighbours' edge columns
     const int c = static_cast<int>(field[k]);
     EXPECT_NE(owner[c], rank);
   }

@@ -1,5 +1,5 @@
-// Principle 5: a small sloshing box shaken sideways gives bitwise the same particles (gathered by global id) and
-// probes on 1, 2, 3 and 4 ranks. Rank 0 recomputes the run alone on MPI_COMM_SELF as the reference.
+// Principle 5: a small sloshing box shaken sideways gives bitwise the same particles (gathered by global id)
+// and probes on 1, 2, 3 and 4 ranks. Rank 0 recomputes the run alone on MPI_COMM_SELF as the reference.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -47,8 +47,14 @@ Result run(MPI_Comm comm, int steps) {
     f.insert(f.end(), {fluid.x()[i], fluid.y()[i], fluid.vx()[i], fluid.vy()[i], fluid.rho()[i]});
   halfeti::parallel::gather_sorted(comm, g, f, 5, r.gid, r.fields);
   const auto u = fluid.velocity_at(0.1, 0.05);
-  r.probes = {fluid.time(), fluid.pressure_at(0.05, 0.03), u[0], u[1], fluid.free_surface_elevation(0.01),
-              fluid.total_mass(), fluid.kinetic_energy(), fluid.max_density_variation()};
+  r.probes = {fluid.time(),
+              fluid.pressure_at(0.05, 0.03),
+              u[0],
+              u[1],
+              fluid.free_surface_elevation(0.01),
+              fluid.total_mass(),
+              fluid.kinetic_energy(),
+              fluid.max_density_variation()};
   return r;
 }
 }  // namespace
@@ -64,13 +70,16 @@ TEST(FluidRanks, BitwiseIdenticalToOneRank) {
     const Result serial = run(MPI_COMM_SELF, steps);
     EXPECT_EQ(serial.gid, distributed.gid);
     same = serial.gid == distributed.gid && serial.fields.size() == distributed.fields.size() &&
-           std::memcmp(serial.fields.data(), distributed.fields.data(), serial.fields.size() * sizeof(double)) == 0 &&
-           std::memcmp(serial.probes.data(), distributed.probes.data(), serial.probes.size() * sizeof(double)) == 0;
+           std::memcmp(serial.fields.data(), distributed.fields.data(),
+                       serial.fields.size() * sizeof(double)) == 0 &&
+           std::memcmp(serial.probes.data(), distributed.probes.data(),
+                       serial.probes.size() * sizeof(double)) == 0;
     std::size_t differ = 0;
     for (std::size_t k = 0; k < std::min(serial.fields.size(), distributed.fields.size()); ++k)
       differ += serial.fields[k] != distributed.fields[k];
-    std::printf("%d rank(s): %zu particles, %zu field values differ from the 1-rank run; t = %.5f s, KE = %.6e\n",
-                size, serial.gid.size(), differ, serial.probes[0], serial.probes[6]);
+    std::printf(
+        "%d rank(s): %zu particles, %zu field values differ from the 1-rank run; t = %.5f s, KE = %.6e\n",
+        size, serial.gid.size(), differ, serial.probes[0], serial.probes[6]);
     for (std::size_t k = 0; k < serial.probes.size(); ++k)
       EXPECT_EQ(serial.probes[k], distributed.probes[k]) << "probe " << k;
     EXPECT_GT(serial.probes[6], 0.0);  // the box did move
@@ -80,8 +89,8 @@ TEST(FluidRanks, BitwiseIdenticalToOneRank) {
 }
 
 namespace {
-// A plate standing in the box, 2 cm thick and 6 cm high, its faces moving sideways at `speed`: up the right face,
-// across the top, down the left face (the outline's convention).
+// A plate standing in the box, 2 cm thick and 6 cm high, its faces moving sideways at `speed`: up the right
+// face, across the top, down the left face (the outline's convention).
 PlateOutline standing_plate(double speed) {
   PlateOutline o;
   auto add = [&](double x, double y) {
@@ -109,9 +118,9 @@ std::vector<double> gathered_state(MPI_Comm comm, const Fluid& fluid) {
 }
 }  // namespace
 
-// The converged plate-water exchange repeats each step (docs/coupling.md, section 16): a step taken with the wrong
-// plate motion and rolled back, then taken with the right one and the density deferred, must give the bits of the
-// step taken once. Over 60 steps with rebalancing every 10 and migration, on 1-4 ranks.
+// The converged plate-water exchange repeats each step (docs/coupling.md, section 16): a step taken with the
+// wrong plate motion and rolled back, then taken with the right one and the density deferred, must give the
+// bits of the step taken once. Over 60 steps with rebalancing every 10 and migration, on 1-4 ranks.
 TEST(FluidRanks, RolledBackStepRepeatsBitForBit) {
   Shake shake;
   const PlateOutline right = standing_plate(0.05), wrong = standing_plate(-0.3);

@@ -41,8 +41,9 @@ TEST(Health, ParticleOutsideTheTankIsFatalWithOneClearMessage) {
 }
 
 TEST(Health, WaterThrownOverTheOpenTopIsRemovedAndCounted) {
-  // A block of 2 x 4 particles above the tank's 0.10 m top: it leaves the run at the first step, not as an error;
-  // the mass still in the tank plus the spilled mass is the initial mass (to round-off), one warning says so.
+  // A block of 2 x 4 particles above the tank's 0.10 m top: it leaves the run at the first step, not as an
+  // error; the mass still in the tank plus the spilled mass is the initial mass (to round-off), one warning
+  // says so.
   FluidParams p = small_tank();
   p.water.push_back({0.04, 0.10, 0.06, 0.11, 0.0});
   Fluid fluid(MPI_COMM_WORLD, p, nullptr);
@@ -79,8 +80,8 @@ TEST(Health, BlowUpIsReportedNotWritten) {
 }
 
 TEST(Hooks, TwoParticlesMovedOntoOnePointKeepFiniteRates) {
-  // The contact's relocation (eq. 22) can put two deep invaders on the same point of the surface; the delta term's
-  // r_ji / r^2 must not turn that into NaN. Each rank moves its second owned particle onto its first.
+  // The contact's relocation (eq. 22) can put two deep invaders on the same point of the surface; the delta
+  // term's r_ji / r^2 must not turn that into NaN. Each rank moves its second owned particle onto its first.
   Fluid fluid(MPI_COMM_WORLD, small_tank(), nullptr);
   fluid.compute_forces();
   fluid.predict();
@@ -96,10 +97,10 @@ TEST(Hooks, TwoParticlesMovedOntoOnePointKeepFiniteRates) {
 }
 
 TEST(Hooks, CorrectionsDoNotPushParticlesIntoTheTankWalls) {
-  // A correction that would carry a particle through the floor or a side wall (the contact at the plate's foot)
-  // stops at the nearer of its predicted distance and dx/2; a particle that ends within one spacing of a wall
-  // keeps no velocity correction into it (the wall takes that impulse), a correction along the wall or away from
-  // it is kept. A correction inside the tank is applied as given.
+  // A correction that would carry a particle through the floor or a side wall (the contact at the plate's
+  // foot) stops at the nearer of its predicted distance and dx/2; a particle that ends within one spacing of
+  // a wall keeps no velocity correction into it (the wall takes that impulse), a correction along the wall or
+  // away from it is kept. A correction inside the tank is applied as given.
   const FluidParams p = small_tank();
   Fluid fluid(MPI_COMM_WORLD, p, nullptr);
   fluid.compute_forces();
@@ -110,7 +111,7 @@ TEST(Hooks, CorrectionsDoNotPushParticlesIntoTheTankWalls) {
   const double x0 = fluid.x()[0], y0 = fluid.y()[0], x1 = fluid.x()[1], y2 = fluid.y()[2], y3 = fluid.y()[3];
   const double vx0 = fluid.vx()[0], vy0 = fluid.vy()[0], vx1 = fluid.vx()[1], vy2 = fluid.vy()[2];
   const double vy3 = fluid.vy()[3];
-  dy[0] = -(y0 + 0.01);  // through the floor
+  dy[0] = -(y0 + 0.01);                                          // through the floor
   const double along = x0 < 0.5 * p.tank_length ? 1e-4 : -1e-4;  // along the floor, towards the middle
   dx[0] = along;
   dvx[0] = along > 0 ? 0.3 : -0.3;  // along the floor, away from the nearer side wall

@@ -27,8 +27,8 @@ TEST(InternalWall, SeparatesTwoStillWaterLevels) {
   EXPECT_EQ(crossed, 0);
   const double rg = p.density * p.gravity;
   const double left = fluid.pressure_at(0.075, 0.02), right = fluid.pressure_at(0.225, 0.02);
-  std::printf("left p = %.1f Pa (hydrostatic %.1f), right p = %.1f Pa (hydrostatic %.1f), KE %.2e J/m\n", left,
-              rg * 0.08, right, rg * 0.03, fluid.kinetic_energy());
+  std::printf("left p = %.1f Pa (hydrostatic %.1f), right p = %.1f Pa (hydrostatic %.1f), KE %.2e J/m\n",
+              left, rg * 0.08, right, rg * 0.03, fluid.kinetic_energy());
   EXPECT_NEAR(left, rg * 0.08, 0.02 * rg * 0.08);
   EXPECT_NEAR(right, rg * 0.03, 0.02 * rg * 0.03);
 }

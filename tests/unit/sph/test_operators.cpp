@@ -1,4 +1,5 @@
-// Neighbour search against brute force, canonical order, renormalised gradient exactness and the still lattice.
+// Neighbour search against brute force, canonical order, renormalised gradient exactness and the still
+// lattice.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -77,7 +78,8 @@ Lattice make_lattice(const Kernel& k, double dx, int nx, int ny, double grad_x, 
       l.p.push_back(pressure_from_density(rho, 1000.0, 10.0));
       l.gid.push_back(static_cast<std::int64_t>(l.gid.size()));
     }
-  const auto grid = halfeti::parallel::CellGrid::covering(-0.01, -0.01, nx * dx + 0.01, ny * dx + 0.01, k.support());
+  const auto grid =
+      halfeti::parallel::CellGrid::covering(-0.01, -0.01, nx * dx + 0.01, ny * dx + 0.01, k.support());
   NeighbourSearch search(grid, k);
   const int n = static_cast<int>(l.x.size());
   search.fluid_pairs(l.x.data(), l.y.data(), l.gid.data(), n, n, l.pairs);
@@ -92,8 +94,8 @@ TEST(DensityGradient, RenormalisedGradientExactForLinearFieldEvenAtCorners) {
   std::vector<double> vol(l.x.size());
   for (std::size_t i = 0; i < vol.size(); ++i) vol[i] = l.m[i] / l.rho[i];
   const int n = static_cast<int>(l.x.size());
-  const ParticleView pv{l.x.data(), l.y.data(), l.vx.data(), l.vy.data(), l.rho.data(), l.m.data(), l.p.data(),
-                        vol.data(), n, n};
+  const ParticleView pv{l.x.data(), l.y.data(), l.vx.data(), l.vy.data(), l.rho.data(),
+                        l.m.data(), l.p.data(), vol.data(),  n,           n};
   std::vector<double> g;
   density_gradient(pv, l.pairs, g);
   for (std::size_t i = 0; i < l.x.size(); ++i) {
@@ -123,7 +125,8 @@ TEST(DeltaSph, ArtificialViscosityDissipates) {
   PairList pairs;
   search.fluid_pairs(x.data(), y.data(), gid.data(), 2, 2, pairs);
   std::vector<double> vol{m[0] / rho[0], m[1] / rho[1]};
-  const ParticleView pv{x.data(), y.data(), vx.data(), vy.data(), rho.data(), m.data(), p.data(), vol.data(), 2, 2};
+  const ParticleView pv{x.data(), y.data(), vx.data(),  vy.data(), rho.data(),
+                        m.data(), p.data(), vol.data(), 2,         2};
   RateConstants c{};
   c.alpha = 0.02;
   c.h = k.h;
@@ -150,8 +153,9 @@ TEST(Kernel, EvaluatorMatchesKernel) {
   }
 }
 
-// The pair search's vectorised loop must give exactly what one evaluation gives (the sums over pairs, and so the
-// results, must not depend on how the kernel was evaluated), on both pieces, at the joint q = 1 and at r = 0.
+// The pair search's vectorised loop must give exactly what one evaluation gives (the sums over pairs, and so
+// the results, must not depend on how the kernel was evaluated), on both pieces, at the joint q = 1 and at r
+// = 0.
 TEST(Kernel, BatchIsBitwiseTheSingleEvaluation) {
   for (auto kind : {KernelKind::kCubicSpline, KernelKind::kWendlandC2}) {
     Kernel k{kind, 0.002};

@@ -1,6 +1,6 @@
 // Speed (DESIGN principle 3): the paper's tank, 0.30 x 0.40 m, 0.10 m of water at dx = 1.5 mm (~13,400
-// particles), 0.1 s of small horizontal excitation. Prints ns per particle-step and the phase timers; run it at 1
-// and 2 ranks. Checks only that it ran and stayed healthy (figures go to docs/sph.md).
+// particles), 0.1 s of small horizontal excitation. Prints ns per particle-step and the phase timers; run it
+// at 1 and 2 ranks. Checks only that it ran and stayed healthy (figures go to docs/sph.md).
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -40,13 +40,15 @@ TEST(Speed, PaperTankTenthOfASecond) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double particle_steps = static_cast<double>(fluid.global_count()) * fluid.step_count();
   const double ns = 1e9 * wall / particle_steps;
-  // CPU time summed over ranks / ranks: what the wall time would be on an idle machine (the test machine is shared).
+  // CPU time summed over ranks / ranks: what the wall time would be on an idle machine (the test machine is
+  // shared).
   double cpu = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   MPI_Allreduce(MPI_IN_PLACE, &cpu, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
   if (rank == 0) {
-    std::printf("%d rank(s): %ld particles, %ld steps, %.2f s wall, %.1f ns per particle-step (max CPU per rank "
-                "%.2f s: %.1f ns)\n", size, fluid.global_count(), fluid.step_count(), wall, ns, cpu,
-                1e9 * cpu / particle_steps);
+    std::printf(
+        "%d rank(s): %ld particles, %ld steps, %.2f s wall, %.1f ns per particle-step (max CPU per rank "
+        "%.2f s: %.1f ns)\n",
+        size, fluid.global_count(), fluid.step_count(), wall, ns, cpu, 1e9 * cpu / particle_steps);
     for (const auto& [phase, s] : fluid.timers().all()) std::printf("  %-17s %7.3f s\n", phase.c_str(), s);
   }
   EXPECT_LT(fluid.max_density_variation(), 0.01);

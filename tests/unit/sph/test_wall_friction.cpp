@@ -9,7 +9,8 @@ using namespace halfeti::sph;
 
 namespace {
 // u from u* by the law itself (the inverse of what friction_velocity solves).
-double speed_from(const LawOfTheWall& law, double us, double y, double nu, double kappa = 0.41, double E = 9.8) {
+double speed_from(const LawOfTheWall& law, double us, double y, double nu, double kappa = 0.41,
+                  double E = 9.8) {
   const double yp = y * us / nu;
   return us * (yp <= law.crossover() ? yp : std::log(E * yp) / kappa);
 }
@@ -58,7 +59,10 @@ TEST(WallFriction, OpposesTheSlipOfTheFirstLayerOnly) {
   double ax[7] = {}, ay[7] = {};
   add_wall_friction(x, y, vx, vy, 7, tank, dx, nu, ax, ay);
   const LawOfTheWall law;
-  const auto drag = [&](double u) { const double s = law.friction_velocity(u, 0.5 * dx, nu); return s * s / dx; };
+  const auto drag = [&](double u) {
+    const double s = law.friction_velocity(u, 0.5 * dx, nu);
+    return s * s / dx;
+  };
   EXPECT_NEAR(ax[0], -drag(1.5), 1e-14);
   EXPECT_EQ(ay[0], 0.0);
   EXPECT_EQ(ax[1], 0.0);

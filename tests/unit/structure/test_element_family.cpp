@@ -63,12 +63,16 @@ void check_family(ElementType type) {
       family.evaluate(e, um, false, false, fm, scratch);
       for (int b = 0; b < Family::kNodes; ++b)
         for (int d = 0; d < 2; ++d)
-          EXPECT_NEAR(k(Family::kNodes * d + b, Family::kNodes * c + a), (fp(2 * b + d) - fm(2 * b + d)) / (2 * h),
-                      1e-5 * kscale)
+          EXPECT_NEAR(k(Family::kNodes * d + b, Family::kNodes * c + a),
+                      (fp(2 * b + d) - fm(2 * b + d)) / (2 * h), 1e-5 * kscale)
               << Family::kName;
     }
 }
 }  // namespace
 
-TEST(ElementFamily, Q9ThroughTheInterface) { check_family<Q9Family>(ElementType::kQ9); }
-TEST(ElementFamily, Q4EasThroughTheInterface) { check_family<Q4EasFamily>(ElementType::kQ4Eas); }
+TEST(ElementFamily, Q9ThroughTheInterface) {
+  check_family<Q9Family>(ElementType::kQ9);
+}
+TEST(ElementFamily, Q4EasThroughTheInterface) {
+  check_family<Q4EasFamily>(ElementType::kQ4Eas);
+}

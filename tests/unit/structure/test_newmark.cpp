@@ -1,7 +1,8 @@
-// Newmark's integrator alone (newmark.hpp), on closed forms: a constant acceleration integrated exactly; on the
-// harmonic oscillator u'' + w^2 u = 0 the trapezoidal rule keeps the energy to round-off with the period
-// lengthened by (w dt)^2 / 12 (Hughes 1987, The Finite Element Method, section 9.3), and gamma > 1/2 damps with
-// the algorithmic damping ratio (gamma - 1/2) w dt / 2 at small w dt; the stability check of its parameters.
+// Newmark's integrator alone (newmark.hpp), on closed forms: a constant acceleration integrated exactly; on
+// the harmonic oscillator u'' + w^2 u = 0 the trapezoidal rule keeps the energy to round-off with the period
+// lengthened by (w dt)^2 / 12 (Hughes 1987, The Finite Element Method, section 9.3), and gamma > 1/2 damps
+// with the algorithmic damping ratio (gamma - 1/2) w dt / 2 at small w dt; the stability check of its
+// parameters.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -68,7 +69,8 @@ TEST(Newmark, TrapezoidalRuleKeepsTheEnergyAndLengthensThePeriodAsKnown) {
   const double w = 2.0 * M_PI, dt = 0.02;  // period 1 s, 50 steps a period
   const auto o = oscillate({0.25, 0.5}, w, dt, 5000);
   for (std::size_t i = 0; i < o.u.size(); ++i)
-    ASSERT_NEAR(0.5 * o.v[i] * o.v[i] + 0.5 * w * w * o.u[i] * o.u[i], 0.5 * w * w, 1e-10 * w * w) << "step " << i;
+    ASSERT_NEAR(0.5 * o.v[i] * o.v[i] + 0.5 * w * w * o.u[i] * o.u[i], 0.5 * w * w, 1e-10 * w * w)
+        << "step " << i;
   const auto t = crossings(o.u, dt);
   ASSERT_GT(t.size(), 50u);
   const double period = (t.back() - t.front()) / (t.size() - 1);
@@ -78,7 +80,7 @@ TEST(Newmark, TrapezoidalRuleKeepsTheEnergyAndLengthensThePeriodAsKnown) {
 
 TEST(Newmark, GammaAboveOneHalfDampsAtItsKnownRatio) {
   // gamma = 0.7, beta = (gamma + 1/2)^2 / 4 = 0.36: the coupled scenes' setting.
-  const double w = 2.0 * M_PI, dt = 0.005;  // w dt = 0.031
+  const double w = 2.0 * M_PI, dt = 0.005;             // w dt = 0.031
   const auto o = oscillate({0.36, 0.7}, w, dt, 4000);  // 20 periods
   double peak_first = 0.0, peak_last = 0.0;
   for (int i = 0; i < 200; ++i) peak_first = std::max(peak_first, o.u[i]);

@@ -4,9 +4,9 @@
 
 #include <set>
 
-#include "plate_surface.hpp"
 #include "halfeti/core/error.hpp"
 #include "halfeti/structure/plate_mesh.hpp"
+#include "plate_surface.hpp"
 
 namespace hs = halfeti::structure;
 
@@ -75,7 +75,8 @@ TEST(PlateMesh, SurfaceIsAContinuousCounterclockwiseChainWithoutTheBase) {
 }
 
 // The Q4 mesh (element q4_eas): the same named nodes, base and counterclockwise surface as the Q9 mesh of the
-// same cells, with (cells + 1) nodes per line; 2-node edges; tensor-order quads; an odd count across is refused.
+// same cells, with (cells + 1) nodes per line; 2-node edges; tensor-order quads; an odd count across is
+// refused.
 TEST(PlateMesh, Q4MeshHasTheSameNamedNodesBaseAndSurface) {
   auto g = geometry(2, 10);
   g.element = hs::ElementType::kQ4Eas;
@@ -87,7 +88,8 @@ TEST(PlateMesh, Q4MeshHasTheSameNamedNodesBaseAndSurface) {
   EXPECT_EQ(m.clamped_nodes.size(), 3u);
   auto g9 = geometry(2, 10);
   const auto m9 = hs::make_plate_mesh(g9);
-  for (const auto& [name, id] : m9.named_nodes) EXPECT_TRUE(m.nodes[m.node(name)].isApprox(m9.nodes[id])) << name;
+  for (const auto& [name, id] : m9.named_nodes)
+    EXPECT_TRUE(m.nodes[m.node(name)].isApprox(m9.nodes[id])) << name;
   for (const auto& q : m.quads) {
     const Eigen::Vector2d dx = m.nodes[q[1]] - m.nodes[q[0]], dy = m.nodes[q[2]] - m.nodes[q[0]];
     EXPECT_GT(dx.x() * dy.y() - dx.y() * dy.x(), 0.0);

@@ -53,32 +53,34 @@ PlateRun run(MPI_Comm comm, hs::ElementType element) {
 
 TEST(PlateRanks, SameAnswerOnOneAndSeveralRanks) {
   for (auto element : {hs::ElementType::kQ9, hs::ElementType::kQ4Eas}) {
-  SCOPED_TRACE(hs::to_string(element));
-  int size = 0;
-  MPI_Comm_size(PETSC_COMM_WORLD, &size);
-  const PlateRun alone = run(PETSC_COMM_SELF, element);
-  const PlateRun shared = run(PETSC_COMM_WORLD, element);
-  int rank = 0;
-  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
-  if (rank == 0)
-    std::printf(
-        "%s, ranks %d: static tip (%.12e, %.12e), after 10 steps (%.12e, %.12e), Newton iterations %d vs %d\n",
-        hs::to_string(element).c_str(), size, shared.static_tip.x(), shared.static_tip.y(), shared.dynamic_tip.x(), shared.dynamic_tip.y(),
-        shared.iterations, alone.iterations);
-  EXPECT_GT(alone.static_tip.x(), 0.1 * 0.08);
-  EXPECT_NEAR((shared.static_tip - alone.static_tip).norm(), 0.0, 1e-12);
-  EXPECT_NEAR((shared.dynamic_tip - alone.dynamic_tip).norm(), 0.0, 1e-12);
-  EXPECT_NEAR(shared.strain_energy, alone.strain_energy, 1e-10 * alone.strain_energy);
-  EXPECT_NEAR(shared.kinetic_energy, alone.kinetic_energy, 1e-8 * alone.kinetic_energy);
-  EXPECT_NEAR(shared.max_von_mises, alone.max_von_mises, 1e-8 * alone.max_von_mises);
-  // The output's per-element fields: the energy densities integrate to the strain energy, the element means stay
-  // below the largest point value (and above half of it in this bending), on any rank count.
-  EXPECT_NEAR(shared.energy_from_density, shared.strain_energy, 1e-10 * shared.strain_energy);
-  EXPECT_LE(shared.max_element_von_mises, shared.max_von_mises * (1 + 1e-12));
-  EXPECT_GT(shared.max_element_von_mises, 0.5 * shared.max_von_mises);
-  EXPECT_NEAR(shared.max_element_von_mises, alone.max_element_von_mises, 1e-8 * alone.max_element_von_mises);
-  // Sums in another order can move a convergence test across its threshold by one iteration.
-  EXPECT_NEAR(shared.iterations, alone.iterations, 2);
+    SCOPED_TRACE(hs::to_string(element));
+    int size = 0;
+    MPI_Comm_size(PETSC_COMM_WORLD, &size);
+    const PlateRun alone = run(PETSC_COMM_SELF, element);
+    const PlateRun shared = run(PETSC_COMM_WORLD, element);
+    int rank = 0;
+    MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+    if (rank == 0)
+      std::printf(
+          "%s, ranks %d: static tip (%.12e, %.12e), after 10 steps (%.12e, %.12e), Newton iterations %d vs "
+          "%d\n",
+          hs::to_string(element).c_str(), size, shared.static_tip.x(), shared.static_tip.y(),
+          shared.dynamic_tip.x(), shared.dynamic_tip.y(), shared.iterations, alone.iterations);
+    EXPECT_GT(alone.static_tip.x(), 0.1 * 0.08);
+    EXPECT_NEAR((shared.static_tip - alone.static_tip).norm(), 0.0, 1e-12);
+    EXPECT_NEAR((shared.dynamic_tip - alone.dynamic_tip).norm(), 0.0, 1e-12);
+    EXPECT_NEAR(shared.strain_energy, alone.strain_energy, 1e-10 * alone.strain_energy);
+    EXPECT_NEAR(shared.kinetic_energy, alone.kinetic_energy, 1e-8 * alone.kinetic_energy);
+    EXPECT_NEAR(shared.max_von_mises, alone.max_von_mises, 1e-8 * alone.max_von_mises);
+    // The output's per-element fields: the energy densities integrate to the strain energy, the element means
+    // stay below the largest point value (and above half of it in this bending), on any rank count.
+    EXPECT_NEAR(shared.energy_from_density, shared.strain_energy, 1e-10 * shared.strain_energy);
+    EXPECT_LE(shared.max_element_von_mises, shared.max_von_mises * (1 + 1e-12));
+    EXPECT_GT(shared.max_element_von_mises, 0.5 * shared.max_von_mises);
+    EXPECT_NEAR(shared.max_element_von_mises, alone.max_element_von_mises,
+                1e-8 * alone.max_element_von_mises);
+    // Sums in another order can move a convergence test across its threshold by one iteration.
+    EXPECT_NEAR(shared.iterations, alone.iterations, 2);
   }
 }
 
@@ -100,8 +102,8 @@ TEST(PlateRanks, PartitionOwnsEveryNodeOnce) {
 
 namespace {
 
-// An element inverted on one rank only (the crushed top elements belong to one METIS part) stops every rank with
-// the same NumericalError instead of leaving the others waiting in the residual's reduction.
+// An element inverted on one rank only (the crushed top elements belong to one METIS part) stops every rank
+// with the same NumericalError instead of leaving the others waiting in the residual's reduction.
 TEST(PlateRanks, InvertedElementStopsEveryRank) {
   hs::PlateSolver s(PETSC_COMM_WORLD, hs::testing::paper_plate(1, 10));
   s.add_edge_load("top", Eigen::Vector2d(0.0, -5e7));  // Pa: crushes the top elements in the first iterate

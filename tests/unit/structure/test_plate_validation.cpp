@@ -93,15 +93,17 @@ Eigen::Vector2d step_cost(hs::PlateSolver& s, int steps) {
 TEST_P(PlateValidationByElement, SmallLoadCantileverConvergence) {
   const double load = 1e-3;  // N/m, tip deflection ~1e-4 L (linear regime)
   std::printf(
-      "\n%s mesh  elements  dofs   tip/EB - 1  tip/Timoshenko - 1  static [ms]  step [us]  Newton/step\n", name());
+      "\n%s mesh  elements  dofs   tip/EB - 1  tip/Timoshenko - 1  static [ms]  step [us]  Newton/step\n",
+      name());
   struct Row {
     int across, along;
     double nu;
   };
-  const std::vector<Row> q9_rows = {Row{1, 20, 0.45}, Row{1, 40, 0.45}, Row{2, 40, 0.45}, Row{2, 60, 0.45},
+  const std::vector<Row> q9_rows = {Row{1, 20, 0.45}, Row{1, 40, 0.45}, Row{2, 40, 0.45},  Row{2, 60, 0.45},
                                     Row{4, 30, 0.45}, Row{4, 60, 0.45}, Row{8, 120, 0.45}, Row{8, 120, 0.0}};
-  const std::vector<Row> q4_rows = {Row{2, 40, 0.45},  Row{2, 60, 0.45},  Row{2, 120, 0.45}, Row{4, 60, 0.45},
-                                    Row{4, 120, 0.45}, Row{8, 240, 0.45}, Row{16, 480, 0.45}, Row{16, 480, 0.0}};
+  const std::vector<Row> q4_rows = {Row{2, 40, 0.45},   Row{2, 60, 0.45},  Row{2, 120, 0.45},
+                                    Row{4, 60, 0.45},   Row{4, 120, 0.45}, Row{8, 240, 0.45},
+                                    Row{16, 480, 0.45}, Row{16, 480, 0.0}};
   const int fine_across = q4() ? 16 : 8;
   double error_paper = 0.0, error_fine = 0.0;
   for (Row r : q4() ? q4_rows : q9_rows) {
@@ -168,8 +170,8 @@ TEST_P(PlateValidationByElement, LargeDeflectionMatchesElastica) {
     std::printf(
         "elastica alpha = %.1f: reference lateral %.5f L, shortening %.5f L; %d x %d %s: lateral %.5f L "
         "(%+.4f), shortening %.5f L (%+.4f), Newton iterations %d\n",
-        alpha, reference.x(), reference.y(), mesh.first, mesh.second, name(), tip.x(), tip.x() / reference.x() - 1,
-        -tip.y(), -tip.y() / reference.y() - 1, s.last_step().newton_iterations);
+        alpha, reference.x(), reference.y(), mesh.first, mesh.second, name(), tip.x(),
+        tip.x() / reference.x() - 1, -tip.y(), -tip.y() / reference.y() - 1, s.last_step().newton_iterations);
     EXPECT_NEAR(tip.x() / reference.x(), 1.0, 0.01);
     EXPECT_NEAR(-tip.y() / reference.y(), 1.0, 0.02);
   }
@@ -222,13 +224,14 @@ TEST_P(PlateValidationByElement, TrapezoidalRuleConservesEnergy) {
   // over 10 periods at T/40, 0.075% -> 1e-7, 0.23% -> 8e-7, 0.75% -> 9e-6 (docs/structure.md). Much smaller
   // amplitudes hit the round-off of the energy itself (I1 - 3 and ln J cancel to ~1e-16 / strain relative).
   // Q4-EAS on the paper's 2 x 60 mesh, the same load. The drift depends on the mesh through its stiff modes'
-  // nonlinear exchange with the first one (measured 1e-7 to 4e-7 for Q9 1 x 10 / 1 x 40 / 1 x 60, Q4-EAS 2 x 10 /
-  // 2 x 40 / 2 x 60; Q4-EAS 2 x 20 is an outlier at 1.5e-6, which scales as amplitude^2 and falls as dt^3.6, so
-  // it is the time integrator's, not an element inconsistency).
+  // nonlinear exchange with the first one (measured 1e-7 to 4e-7 for Q9 1 x 10 / 1 x 40 / 1 x 60, Q4-EAS 2 x
+  // 10 / 2 x 40 / 2 x 60; Q4-EAS 2 x 20 is an outlier at 1.5e-6, which scales as amplitude^2 and falls as
+  // dt^3.6, so it is the time integrator's, not an element inconsistency).
   const auto p = plate(q4() ? 2 : 1, q4() ? 60 : 20);
   const Eigen::Vector3d r = free_vibration(p, 0.01, 100, 40);
-  std::printf("trapezoidal rule, %d x %d %s, 100 periods at T/40: max |E - E0| / E0 = %.2e, %.0f us per step\n",
-              p.geometry.cells_across, p.geometry.cells_along, name(), r(1), r(2));
+  std::printf(
+      "trapezoidal rule, %d x %d %s, 100 periods at T/40: max |E - E0| / E0 = %.2e, %.0f us per step\n",
+      p.geometry.cells_across, p.geometry.cells_along, name(), r(1), r(2));
   EXPECT_LT(r(1), 1e-6);
 }
 
@@ -259,12 +262,13 @@ TEST(PlateValidation, SuddenTankAccelerationDoublesTheDeflection) {
 TEST_P(PlateValidationByElement, NewtonIterationCost) {
   // Breakdown of one Newton iteration at the paper's dt on an unloaded machine-independent case: the element
   // kernel alone (force + tangent of every element), the whole assembly, the numeric factorisation (PCSetUp)
-  // and the triangular solves (KSPSolve with the factors in place). PETSc options on the command line reach the
-  // plate's KSP (-structure_pc_type cholesky, ...). The machine is shared: the mean over all iterations and the
-  // best of 20 batches of 50 (closest to an unloaded core) are printed.
+  // and the triangular solves (KSPSolve with the factors in place). PETSc options on the command line reach
+  // the plate's KSP (-structure_pc_type cholesky, ...). The machine is shared: the mean over all iterations
+  // and the best of 20 batches of 50 (closest to an unloaded core) are printed.
   std::printf("load average (1, 5, 15 min): %s\n", load_average().c_str());
   const std::vector<std::pair<int, int>> meshes =
-      q4() ? std::vector<std::pair<int, int>>{{2, 60}, {4, 120}} : std::vector<std::pair<int, int>>{{2, 60}, {1, 40}, {1, 30}};
+      q4() ? std::vector<std::pair<int, int>>{{2, 60}, {4, 120}}
+           : std::vector<std::pair<int, int>>{{2, 60}, {1, 40}, {1, 30}};
   for (auto mesh : meshes) {
     const auto p = plate(mesh.first, mesh.second);
     hs::PlateSolver s(PETSC_COMM_WORLD, p);
@@ -274,7 +278,8 @@ TEST_P(PlateValidationByElement, NewtonIterationCost) {
     s.assemble_newton_system();
     s.apply_increment(s.solve_newton_increment());
 
-    const auto material = hs::make_material(p.material.model, p.material.youngs_modulus, p.material.poisson_ratio);
+    const auto material =
+        hs::make_material(p.material.model, p.material.youngs_modulus, p.material.poisson_ratio);
     const int elements = s.mesh().element_count();
     double kernel = 1e9, force_only = 1e9, checksum = 0.0;
     // Best of 20 batches of 20 passes over all elements: force + tangent, then the force alone.
@@ -316,8 +321,8 @@ TEST_P(PlateValidationByElement, NewtonIterationCost) {
       }
       time_kernel(
           [&](int e) {
-            q4e.internal_force_and_tangent_component_major(geometry[e], displacement[e], alpha[e], force, tangent,
-                                                           &update);
+            q4e.internal_force_and_tangent_component_major(geometry[e], displacement[e], alpha[e], force,
+                                                           tangent, &update);
             local_iterations = q4e.last_local_iterations();
             return tangent(3, 5);
           },
@@ -326,7 +331,8 @@ TEST_P(PlateValidationByElement, NewtonIterationCost) {
             return force(3);
           });
     } else {
-      const hs::HyperelasticQ9 q9(*material, {p.material.hypothesis, p.material.selective_reduced_integration});
+      const hs::HyperelasticQ9 q9(*material,
+                                  {p.material.hypothesis, p.material.selective_reduced_integration});
       std::vector<hs::Q9Geometry> geometry;
       std::vector<hs::Q9Coordinates> displacement;
       hs::Q9Vector force;
@@ -384,13 +390,15 @@ TEST_P(PlateValidationByElement, NewtonIterationCost) {
     MatType mat_type = nullptr;
     MatGetType(s.newton_matrix(), &mat_type);
     std::printf(
-        "one Newton iteration, %d x %d %s (%d dofs), %s + %s: mean %.1f us = assembly %.1f + factorisation %.1f + "
-        "solve %.1f; best batch %.1f us (best per part %.1f + %.1f + %.1f); element kernel %.2f us (force alone "
+        "one Newton iteration, %d x %d %s (%d dofs), %s + %s: mean %.1f us = assembly %.1f + factorisation "
+        "%.1f + "
+        "solve %.1f; best batch %.1f us (best per part %.1f + %.1f + %.1f); element kernel %.2f us (force "
+        "alone "
         "%.2f us) x %d = %.1f us [%g]%s\n",
-        mesh.first, mesh.second, name(), s.dof_count(), mat_type, pc_type, 1e6 * (assembly + factor + solve) / n,
-        1e6 * assembly / n, 1e6 * factor / n, 1e6 * solve / n, 1e6 * best, 1e6 * best_part[0],
-        1e6 * best_part[1], 1e6 * best_part[2], 1e6 * kernel, 1e6 * force_only, elements,
-        1e6 * kernel * elements, checksum == 0.0 ? 0.0 : 1.0,
+        mesh.first, mesh.second, name(), s.dof_count(), mat_type, pc_type,
+        1e6 * (assembly + factor + solve) / n, 1e6 * assembly / n, 1e6 * factor / n, 1e6 * solve / n,
+        1e6 * best, 1e6 * best_part[0], 1e6 * best_part[1], 1e6 * best_part[2], 1e6 * kernel,
+        1e6 * force_only, elements, 1e6 * kernel * elements, checksum == 0.0 ? 0.0 : 1.0,
         q4() ? (", local iterations per element " + std::to_string(local_iterations)).c_str() : "");
 
     // Whole time steps at the paper's dt: free vibration after release from a small static tip load.
@@ -403,13 +411,17 @@ TEST_P(PlateValidationByElement, NewtonIterationCost) {
     int iterations = 0, steps = 0;
     for (int b = 0; b < batches; ++b) {
       const double t0 = now();
-      for (int i = 0; i < per_batch; ++i, ++steps) iterations += v.step(steps * 1.6e-5, 1.6e-5).newton_iterations;
+      for (int i = 0; i < per_batch; ++i, ++steps)
+        iterations += v.step(steps * 1.6e-5, 1.6e-5).newton_iterations;
       const double batch = now() - t0;
       step_total += batch;
       step_best = std::min(step_best, batch / per_batch);
     }
-    std::printf("time step at dt = 1.6e-5 s, %d x %d %s: mean %.1f us, best batch %.1f us, %.2f Newton iterations/step\n",
-                mesh.first, mesh.second, name(), 1e6 * step_total / steps, 1e6 * step_best, double(iterations) / steps);
+    std::printf(
+        "time step at dt = 1.6e-5 s, %d x %d %s: mean %.1f us, best batch %.1f us, %.2f Newton "
+        "iterations/step\n",
+        mesh.first, mesh.second, name(), 1e6 * step_total / steps, 1e6 * step_best,
+        double(iterations) / steps);
   }
   std::printf("load average (1, 5, 15 min): %s\n", load_average().c_str());
   SUCCEED();

@@ -90,8 +90,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{hs::MaterialModel::kStVenantKirchhoff, hs::PlaneHypothesis::kPlaneStress, false}));
 
 // The closed-form Neo-Hookean plane-strain kernel (the default path) against the general material path, at a
-// strong deformation and at a vibration-size one (strains ~1e-6, where round-off of the stress matters): force
-// and tangent agree to round-off, and the component-major tangent is the interleaved one reordered.
+// strong deformation and at a vibration-size one (strains ~1e-6, where round-off of the stress matters):
+// force and tangent agree to round-off, and the component-major tangent is the interleaved one reordered.
 TEST(Q9, ClosedFormNeoHookeanEqualsGeneralPath) {
   auto m = hs::make_material(hs::MaterialModel::kNeoHookean, 10e6, 0.49);
   const auto x0 = distorted_reference();
@@ -106,8 +106,10 @@ TEST(Q9, ClosedFormNeoHookeanEqualsGeneralPath) {
       hs::Q9Matrix k_fast, k_general, k_component_major;
       fast.internal_force_and_tangent(g, u, f_fast, k_fast);
       general.internal_force_and_tangent(g, u, f_general, k_general);
-      EXPECT_LE((f_fast - f_general).norm(), 1e-12 * f_general.norm()) << "reduced " << reduced << " scale " << scale;
-      EXPECT_LE((k_fast - k_general).norm(), 1e-12 * k_general.norm()) << "reduced " << reduced << " scale " << scale;
+      EXPECT_LE((f_fast - f_general).norm(), 1e-12 * f_general.norm())
+          << "reduced " << reduced << " scale " << scale;
+      EXPECT_LE((k_fast - k_general).norm(), 1e-12 * k_general.norm())
+          << "reduced " << reduced << " scale " << scale;
       hs::Q9Vector f_only;
       fast.internal_force(g, u, f_only);
       EXPECT_EQ((f_only - f_fast).norm(), 0.0);
