@@ -37,4 +37,9 @@ grep -q "did you mean 'amplitude'" <<<"$err" || { echo "the error does not name 
 [ ! -e "$work/misspelt/sweep.sbatch" ] || { echo "a job script was written for a sweep that does not check"; exit 1; }
 # The time request comes from the estimate (tiny: well under a minute, so 5 minutes).
 grep -q "#SBATCH --time=00:05:00" "$work/slurm/sweep.sbatch" || { echo "time request not from the estimate"; exit 1; }
+# --ranks auto: the paper's tank (13,333 particles by the check's estimate) gets 2 ranks, the array asks for them.
+out=$("$root/jobscripts/sweep" "$root/inputs/bench/sph_slosh.yaml" --vary excitation.amplitude=0.5 --ranks auto \
+  --slurm --out "$work/auto")
+grep -q "2 rank(s) for 13333 particles" <<<"$out" || { echo "--ranks auto: $out"; exit 1; }
+grep -q "#SBATCH --ntasks=2" "$work/auto/sweep.sbatch" || { echo "--ranks auto: no 2-task request"; exit 1; }
 echo "sweep: ok"
