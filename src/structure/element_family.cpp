@@ -2,20 +2,28 @@
 
 namespace halfeti::structure {
 
+namespace {
+// An element's rows of a field with 2 values per node (reference positions, displacements), in its node
+// order.
+template <typename Coordinates, std::size_t N, typename Row>
+Coordinates element_rows(const std::array<int, N>& nodes, Row&& row) {
+  Coordinates out;
+  for (std::size_t a = 0; a < N; ++a) out.row(static_cast<Eigen::Index>(a)) = row(nodes[a]).transpose();
+  return out;
+}
+}  // namespace
+
 Q9Family::Q9Family(const Material& material, const Q9Options& options, const PlateMesh& mesh, double density)
     : integrator_(material, options), mesh_(&mesh) {
   for (const auto& e : mesh.elements) {
-    Q9Coordinates x;
-    for (int a = 0; a < kNodes; ++a) x.row(a) = mesh.nodes[e[a]].transpose();
+    const auto x = element_rows<Q9Coordinates>(e, [&](int n) { return mesh.nodes[n]; });
     geometry_.push_back(HyperelasticQ9::reference_geometry(x));
     mass_.push_back(HyperelasticQ9::scalar_mass(geometry_.back(), density));
   }
 }
 
 Q9Family::Coordinates Q9Family::displacement(int e, const Eigen::VectorXd& u) const {
-  Coordinates out;
-  for (int a = 0; a < kNodes; ++a) out.row(a) = u.segment<2>(2 * nodes(e)[a]).transpose();
-  return out;
+  return element_rows<Coordinates>(nodes(e), [&](int n) { return u.segment<2>(2 * n); });
 }
 
 void Q9Family::evaluate(int e, const Coordinates& u, bool with_matrix, bool with_tangent, Vector& force,
@@ -32,8 +40,7 @@ Q4EasFamily::Q4EasFamily(const Material& material, const Q4EasOptions& options, 
                          double density)
     : integrator_(material, options), mesh_(&mesh) {
   for (const auto& e : mesh.quads) {
-    Q4Coordinates x;
-    for (int a = 0; a < kNodes; ++a) x.row(a) = mesh.nodes[e[a]].transpose();
+    const auto x = element_rows<Q4Coordinates>(e, [&](int n) { return mesh.nodes[n]; });
     geometry_.push_back(HyperelasticQ4Eas::reference_geometry(x));
     mass_.push_back(HyperelasticQ4Eas::scalar_mass(geometry_.back(), density));
   }
@@ -43,9 +50,7 @@ Q4EasFamily::Q4EasFamily(const Material& material, const Q4EasOptions& options, 
 }
 
 Q4EasFamily::Coordinates Q4EasFamily::displacement(int e, const Eigen::VectorXd& u) const {
-  Coordinates out;
-  for (int a = 0; a < kNodes; ++a) out.row(a) = u.segment<2>(2 * nodes(e)[a]).transpose();
-  return out;
+  return element_rows<Coordinates>(nodes(e), [&](int n) { return u.segment<2>(2 * n); });
 }
 
 void Q4EasFamily::evaluate(int e, const Coordinates& u, bool with_matrix, bool with_tangent, Vector& force,
