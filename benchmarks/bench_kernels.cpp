@@ -74,8 +74,7 @@ void BM_CableElement(benchmark::State& state) {
 BENCHMARK(BM_CableElement);
 
 void BM_PairSearch(benchmark::State& state) {
-  // A block of water on a square lattice, dx = 1.5 mm, h = 1.33 dx (the paper scenes' ratio), side n
-  // particles.
+  // A block of water on a square lattice, dx = 1.5 mm, h = 1.33 dx (the paper scenes' ratio), side n particles.
   const int n = static_cast<int>(state.range(0));
   const double dx = 0.0015;
   sph::Kernel kernel;

@@ -148,8 +148,7 @@ sph::FluidParams fluid_params(const scene::Node& root, double peak_ground_accele
       HALFETI_USER_ERROR(w.path() << ": water from [" << a[0] << ", " << a[1] << "] to [" << b[0] << ", "
                                   << b[1] << "] does not fit in the tank [0, " << p.tank_length << "] x [0, "
                                   << p.tank_height << "]");
-    // The lattice shows the surface to within a spacing: a smaller wave would live in the initial pressure
-    // only.
+    // The lattice shows the surface to within a spacing: a smaller wave would live in the initial pressure only.
     if (block.surface_amplitude != 0.0 && std::abs(block.surface_amplitude) < 0.5 * p.spacing)
       HALFETI_USER_ERROR(w.key_path("surface_amplitude")
                          << ": " << block.surface_amplitude << " m is below half the spacing ("

@@ -2,8 +2,7 @@
 //
 //   mpirun -n 2 halfeti run inputs/validation/dambreak.yaml --out out/dambreak
 //   halfeti check inputs/paper/cosine_cable.yaml --set fluid.spacing=0.002
-//   halfeti cable --from 0,0.01 --to 0.1485,0.08 --modulus 1.14e6 --area 4e-6 --density 1150 --tension-stress
-//   135e3
+//   halfeti cable --from 0,0.01 --to 0.1485,0.08 --modulus 1.14e6 --area 4e-6 --density 1150 --tension-stress 135e3
 #include <mpi.h>
 
 #include <algorithm>
@@ -29,8 +28,8 @@ int main(int argc, char** argv) {
     std::fflush(stderr);
     MPI_Abort(MPI_COMM_WORLD, halfeti::exit_status(e.kind()));
   } catch (const halfeti::Error& e) {
-    // User and numerical errors are raised on every rank together (collective checks); rank 0 says it once,
-    // one prefixed line per error (a scene's check reports all it found).
+    // User and numerical errors are raised on every rank together (collective checks); rank 0 says it once, one
+    // prefixed line per error (a scene's check reports all it found).
     if (rank == 0) {
       const std::string text = e.what();
       for (std::size_t start = 0; start <= text.size();) {

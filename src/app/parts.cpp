@@ -1,5 +1,5 @@
-// The parts of a run: their parameters from the scene (what `halfeti check` reads), and the plate with its
-// cables on the structure's ranks.
+// The parts of a run: their parameters from the scene (what `halfeti check` reads), and the plate with its cables on
+// the structure's ranks.
 #include "halfeti/app/parts.hpp"
 
 #include <algorithm>
@@ -114,8 +114,8 @@ void build_parts(Parts& parts, MPI_Comm comm, bool trace_coupling) {
   }
 }
 
-// The plate and its cables live on the first structure.ranks world ranks (the structure's own communicator;
-// rank 0 is always one of them and holds what probes and outputs read).
+// The plate and its cables live on the first structure.ranks world ranks (the structure's own communicator; rank 0
+// is always one of them and holds what probes and outputs read).
 void build_structure(Parts& parts, MPI_Comm comm) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);

@@ -20,8 +20,7 @@ std::string at(double t, long long step) {
 void RunHealth::check_cables(MPI_Comm comm, const Parts& parts, double t, long long step) {
   const std::size_t n = parts.cable_setups.size();
   if (n == 0) return;
-  // Per cable: slack (1/0), the shortfall L0 - chord [m], the larger end stress of one cable [Pa], the plate
-  // end.
+  // Per cable: slack (1/0), the shortfall L0 - chord [m], the larger end stress of one cable [Pa], the plate end.
   std::vector<double> s(5 * n, 0.0);
   int rank = 0;
   MPI_Comm_rank(comm, &rank);

@@ -29,8 +29,8 @@ std::string format(const char* fmt, double a) {
   return buf;
 }
 
-// The structure solves on its own ranks (world rank 0 among them); its failure must stop every rank together
-// (no rank may be left waiting in a collective call).
+// The structure solves on its own ranks (world rank 0 among them); its failure must stop every rank together (no
+// rank may be left waiting in a collective call).
 template <class Work>
 void on_structure_rank(MPI_Comm comm, bool structure_rank, Work&& work) {
   collective_outcome(comm, 0, structure_rank, work);
@@ -55,10 +55,9 @@ const char* signal_name(int s) {
   }
 }
 
-// The next time of an output schedule once the run has reached t: the sequence interval, interval + interval,
-// ... (each the sum of the one before and the interval), skipping whole intervals at once when a step spans
-// very many (an interval far below the time step) and never stuck where the interval is below the time's
-// round-off.
+// The next time of an output schedule once the run has reached t: the sequence interval, interval + interval, ...
+// (each the sum of the one before and the interval), skipping whole intervals at once when a step spans very many
+// (an interval far below the time step) and never stuck where the interval is below the time's round-off.
 double next_in_schedule(double next, double interval, double t, double tol) {
   if (!(interval > 0.0)) return next;
   if (const double behind = (t + tol - next) / interval; behind > 1000.0)
@@ -112,8 +111,8 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
   }
   std::vector<std::string> names;
   for (const auto& p : probes_) names.push_back(p.name);
-  // A continued run carries the probe rows up to the checkpoint (from its own folder or the one it came
-  // from), continues the field series in its own folder, and appends to its log.
+  // A continued run carries the probe rows up to the checkpoint (from its own folder or the one it came from),
+  // continues the field series in its own folder, and appends to its log.
   std::vector<std::string> carried;
   collective_outcome(comm_, 0, rank_ == 0, [&] {
     if (checkpoint)
@@ -180,10 +179,9 @@ coupling::InterfaceParticles Simulation::interface_of(const sph::Fluid& f) {
           f.vx().data(),   f.vy().data(),  f.mass().data(), grad.empty() ? nullptr : grad.data()};
 }
 
-// One coupled step (DESIGN.md "One time step"): fluid forces and prediction, the interface gathered to the
-// plate's rank, the plate and the invaders solved together (eq. 21), the corrections handed back (eqs. 4,
-// 22-24), then the fluid finishes its step (health, migration) and the plate's new outline bars pairs across
-// it.
+// One coupled step (DESIGN.md "One time step"): fluid forces and prediction, the interface gathered to the plate's
+// rank, the plate and the invaders solved together (eq. 21), the corrections handed back (eqs. 4, 22-24), then
+// the fluid finishes its step (health, migration) and the plate's new outline bars pairs across it.
 double Simulation::advance_coupled() {
   if (parts_.coupling->parameters().implicit_exchange()) return advance_coupled_implicit();
   sph::Fluid& f = *parts_.fluid;
@@ -238,8 +236,8 @@ void Simulation::sample(double t) {
     max_density_variation_ = std::max(max_density_variation_, parts_.fluid->max_density_variation());
 }
 
-// Whether every rank should stop at this step's end: a signal reached one of them, or (rank 0's clock) the
-// next step and a checkpoint would not fit in --max-wall. One reduction per step; the reason on every rank.
+// Whether every rank should stop at this step's end: a signal reached one of them, or (rank 0's clock) the next
+// step and a checkpoint would not fit in --max-wall. One reduction per step; the reason on every rank.
 std::string Simulation::stop_reason(double wall, double step_wall) {
   int why[3] = {static_cast<int>(g_stop_signal), 0, 0};
   if (rank_ == 0 && options_.max_wall > 0.0 &&
@@ -267,8 +265,8 @@ void Simulation::check_outputs() {
   });
 }
 
-// The steps from t_ to `end` with the outputs on their schedules; returns why the run stopped before the end
-// (a signal, the wall-time limit), "" when it got there.
+// The steps from t_ to `end` with the outputs on their schedules; returns why the run stopped before the end (a
+// signal, the wall-time limit), "" when it got there.
 std::string Simulation::run_steps(double end, double start) {
   const scene::Node out = scene_.root().section("output");
   const double probe_dt = out.real("probe_interval");
@@ -350,8 +348,7 @@ int Simulation::run() {
     write_summary("numerical_failure", wall_seconds() - start, wall_seconds() - loop_start);
     throw;
   } catch (const IoError& e) {
-    // An output that cannot be written (a full disk): said once, and in summary.json if that can still be
-    // written.
+    // An output that cannot be written (a full disk): said once, and in summary.json if that can still be written.
     try {
       log_->line(std::string("stopped: ") + e.what());
       write_summary("io_failure", wall_seconds() - start, wall_seconds() - loop_start);
@@ -391,8 +388,8 @@ void Simulation::check_health() {
 }
 
 void Simulation::record_failure(const std::string& message) {
-  // The failure's time and step are those of the step that failed (the fluid's clock has advanced to its end;
-  // the plate alone was going to step_end_); a failure before the first step is the static start's, at t = 0.
+  // The failure's time and step are those of the step that failed (the fluid's clock has advanced to its end; the
+  // plate alone was going to step_end_); a failure before the first step is the static start's, at t = 0.
   if (in_step_) {
     t_ = parts_.fluid ? parts_.fluid->time() : step_end_;
     ++steps_;

@@ -1,8 +1,7 @@
 // The coupled step with the plate-water exchange converged within the step (coupling.plate_wall_exchange:
-// implicit; docs/coupling.md, section 16). The explicit step hands the plate the water's load of the step's
-// start (extrapolated) and the water the plate's motion of the step before: on a plate light against the
-// water it moves (the paper's rubber plate with the trapezoidal rule), that lag feeds energy into the
-// plate-water motion. Here:
+// implicit; docs/coupling.md, section 16). The explicit step hands the plate the water's load of the step's start
+// (extrapolated) and the water the plate's motion of the step before: on a plate light against the water it moves
+// (the paper's rubber plate with the trapezoidal rule), that lag feeds energy into the plate-water motion. Here:
 //
 //   forces at t_n with the plate at t_n (done by the last step, or now)      F_n, the water's rates
 //   save the water, the plate, its cables and the coupling
@@ -15,9 +14,8 @@
 //            else F_in = IQN-ILS(F_in, F_out), everything put back, again
 //   (a stalled iteration ends with its best iterate: ContactCoupling::converge_exchange)
 //
-// With the plate solved under F_n+1 the trapezoidal rule's step is the plate's own (its work the trapezoid of
-// F_n and F_n+1), and the water's continuity sees the plate's actual motion: the exchange adds no energy of
-// its own.
+// With the plate solved under F_n+1 the trapezoidal rule's step is the plate's own (its work the trapezoid of F_n
+// and F_n+1), and the water's continuity sees the plate's actual motion: the exchange adds no energy of its own.
 #include <sstream>
 
 #include "halfeti/app/run_health.hpp"

@@ -1,6 +1,6 @@
-// The field series of a run (README "Outputs"): the water's particles, the plate's mesh with its stress, the
-// cables as curves with their tension, and the tank's outline, each an HDF5 file per output time with an XDMF
-// series ParaView opens. Everything is in the tank's frame (the frame the solver works in).
+// The field series of a run (README "Outputs"): the water's particles, the plate's mesh with its stress, the cables
+// as curves with their tension, and the tank's outline, each an HDF5 file per output time with an XDMF series
+// ParaView opens. Everything is in the tank's frame (the frame the solver works in).
 #include <cstdint>
 
 #include "halfeti/app/simulation.hpp"

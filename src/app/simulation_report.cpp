@@ -1,6 +1,6 @@
-// What a run tells: its start-up lines (log.txt), the progress line, the coupling trace (--trace coupling),
-// and summary.json, the run's status, provenance, size, cost, timers, mass balance and health, written by
-// rank 0 (DESIGN.md's output contract; README "Outputs").
+// What a run tells: its start-up lines (log.txt), the progress line, the coupling trace (--trace coupling), and
+// summary.json, the run's status, provenance, size, cost, timers, mass balance and health, written by rank 0
+// (DESIGN.md's output contract; README "Outputs").
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -57,8 +57,8 @@ std::string Simulation::progress_line(double dt, double wall) const {
   return buf;
 }
 
-// One line per coupled step on stderr (rank 0: the contact and plate-wall forces on the plate's side; every
-// rank: its fastest particle), for the noise figures of docs/coupling.md.
+// One line per coupled step on stderr (rank 0: the contact and plate-wall forces on the plate's side; every rank:
+// its fastest particle), for the noise figures of docs/coupling.md.
 void Simulation::trace_coupled_step() const {
   const sph::Fluid& f = *parts_.fluid;
   const auto& r = parts_.coupling->last_step();
@@ -98,8 +98,8 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
     timers.merge(plate);
   }
   const long long dofs = parts_.plate ? parts_.plate->dof_count() : 0;  // written by rank 0, a structure rank
-  // Cost: CPU seconds (user + system) summed over the ranks, and the peak resident memory of the busiest rank
-  // and of all ranks together (getrusage: this process since it started).
+  // Cost: CPU seconds (user + system) summed over the ranks, and the peak resident memory of the busiest rank and
+  // of all ranks together (getrusage: this process since it started).
   struct rusage usage {};
   getrusage(RUSAGE_SELF, &usage);
   const double cpu_here = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
@@ -108,9 +108,9 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
   double sums[2] = {cpu_here, rss_here}, rss_max = rss_here;
   MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, comm_);
   MPI_Allreduce(MPI_IN_PLACE, &rss_max, 1, MPI_DOUBLE, MPI_MAX, comm_);
-  // Per rank: the water's messages and bytes sent (halo and migration), seconds waiting for them, its own
-  // work (the fluid's phases that no other rank waits in: pairs, forces, density gradient, integration) and
-  // its peak memory, gathered on rank 0.
+  // Per rank: the water's messages and bytes sent (halo and migration), seconds waiting for them, its own work
+  // (the fluid's phases that no other rank waits in: pairs, forces, density gradient, integration) and its peak
+  // memory, gathered on rank 0.
   constexpr int kPerRank = 5;
   double mine[kPerRank] = {0, 0, 0, 0, rss_here};
   if (parts_.fluid) {
@@ -205,15 +205,13 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
       j.set("exchange", ex);
     }
     j.set("max_density_variation", parts_.fluid ? io::Json(max_density_variation_) : io::Json());
-    // Water thrown over the tank's open top leaves the run (a "spilled" health event); the error counts it
-    // in.
+    // Water thrown over the tank's open top leaves the run (a "spilled" health event); the error counts it in.
     const double spilled = parts_.fluid ? parts_.fluid->spilled_mass() : 0.0;
     j.set("mass_error", parts_.fluid && initial_mass_ > 0
                             ? io::Json((mass + spilled - initial_mass_) / initial_mass_)
                             : io::Json());
     j.set("spilled_mass", parts_.fluid ? io::Json(spilled) : io::Json());
-    // Health: each kind's episodes, the first (its message) and the worst value with where and when; the
-    // list.
+    // Health: each kind's episodes, the first (its message) and the worst value with where and when; the list.
     const HealthLog log = health_events();
     const HealthTally health = tally(log);
     const auto number = [](double v) { return std::isfinite(v) ? io::Json(v) : io::Json(); };

@@ -82,8 +82,8 @@ void Simulation::restore(io::Checkpoint c) {
     const auto& f = block("fluid");
     if (f.size() != 4)
       HALFETI_USER_ERROR("restart: the fluid state of '" << restart_path_ << "' is malformed");
-    // The sound speed may be sized from the peak ground acceleration up to end_time (eq. 10): a longer run
-    // must not change it.
+    // The sound speed may be sized from the peak ground acceleration up to end_time (eq. 10): a longer run must
+    // not change it.
     if (f[3] != parts_.fluid->sound_speed())
       HALFETI_USER_ERROR("restart: the sound speed is " << parts_.fluid->sound_speed()
                                                         << " m/s, the checkpoint's " << f[3]

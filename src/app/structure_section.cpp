@@ -256,8 +256,8 @@ std::vector<CableSetup> cable_setups(const scene::Node& root, const StructureSet
       HALFETI_USER_ERROR(c.key_path("name") << ": cable name '" << cs.name << "' used twice");
     const auto a = c.point("anchor");
     cs.anchor = {a[0], a[1]};
-    // A cable is anchored on the tank: on its floor or a side wall (within 1 % of the tank's size), not in
-    // mid-water or outside it.
+    // A cable is anchored on the tank: on its floor or a side wall (within 1 % of the tank's size), not in mid-water
+    // or outside it.
     if (root.has("tank")) {
       const double L = root.section("tank").real("length"), H = root.section("tank").real("height");
       const double tol = 0.01 * std::max(L, H);

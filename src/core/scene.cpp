@@ -64,8 +64,8 @@ std::string Scene::resolved_text() const {
 }
 
 namespace {
-// yaml-cpp keeps every entry of a mapping that repeats a key (and its lookups find the first): a repeated key
-// is an error here, as PyYAML in the tools would silently keep the last.
+// yaml-cpp keeps every entry of a mapping that repeats a key (and its lookups find the first): a repeated key is
+// an error here, as PyYAML in the tools would silently keep the last.
 void find_duplicate_keys(const YAML::Node& n, const std::string& file, const std::string& path,
                          std::vector<std::string>& found) {
   if (n.IsSequence()) {
@@ -127,8 +127,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
                  MPI_Comm comm) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
-  // Rank 0 sends either "ok" + the resolved text, or "error" + the message; the others rebuild the same
-  // outcome.
+  // Rank 0 sends either "ok" + the resolved text, or "error" + the message; the others rebuild the same outcome.
   int status = 0;
   std::string payload;
   if (rank == 0) {

@@ -72,8 +72,7 @@ Key& Key::implied_by(std::vector<std::string> siblings) {
 }
 
 Key& Key::def(double v) {
-  // The shortest text that reads back to the same double, so resolved scenes show 0.005, not
-  // 0.0050000000000000001.
+  // The shortest text that reads back to the same double, so resolved scenes show 0.005, not 0.0050000000000000001.
   char buf[40];
   for (int precision = 6; precision <= 17; ++precision) {
     std::snprintf(buf, sizeof buf, "%.*g", precision, v);
@@ -221,8 +220,7 @@ const Key* Schema::find(const std::string& name) const {
 }
 
 std::string closest_name(const std::string& word, const std::vector<std::string>& candidates) {
-  // Edit distance with adjacent transpositions (optimal string alignment): 'heigth' is one edit from
-  // 'height'.
+  // Edit distance with adjacent transpositions (optimal string alignment): 'heigth' is one edit from 'height'.
   auto distance = [](const std::string& a, const std::string& b) {
     std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
     for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;

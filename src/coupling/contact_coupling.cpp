@@ -44,8 +44,8 @@ void SurfacePointLoad::start_step(const Eigen::Vector2d& load, const Eigen::Vect
                                   const Eigen::Matrix2d& added_mass, Guess guess) {
   added_mass_ = added_mass;
   rest_ = has_previous_ ? Eigen::Vector2d(2.0 * place - place_) : place;
-  // The explicit exchange's trapezoidal step wants the load at mid-step; the water's is from the step's
-  // start. The converged exchange's starts from the load extrapolated to the step's end.
+  // The explicit exchange's trapezoidal step wants the load at mid-step; the water's is from the step's start. The
+  // converged exchange's starts from the load extrapolated to the step's end.
   force_ = load;
   if (has_previous_ && guess == Guess::kMidStep) force_ = 1.5 * load - 0.5 * previous_;
   if (has_previous_ && guess == Guess::kStepEnd) force_ = 2.0 * load - previous_;
@@ -78,8 +78,7 @@ ContactCoupling::ContactCoupling(MPI_Comm world, structure::PlateSolver* solver,
     system_ = std::make_unique<ContactSystem>(*solver_, params_.constraint, params_.options_prefix,
                                               params_.solver, params_.mass_participation);
   broadcast_surface();
-  // The plate's thickness (its base corners are the surface's ends): how deep inside the plate the search
-  // looks.
+  // The plate's thickness (its base corners are the surface's ends): how deep inside the plate the search looks.
   if (surface_.points.size() >= 2) thickness_ = (surface_.points.front() - surface_.points.back()).norm();
   if (solver_ != nullptr) {
     for (int node : surface_.nodes) {
@@ -194,8 +193,8 @@ void ContactCoupling::set_fluid_loads(const std::vector<sph::PlateWallLoad>& loc
                                                       : Guess::kStart;
     for (std::size_t k = 0; k < loads_.size(); ++k) {
       auto& l = *loads_[k];
-      // The interface added mass on this point (sections 13, 15): along its normal, on half of each
-      // neighbouring segment's length; none on the clamped base corners.
+      // The interface added mass on this point (sections 13, 15): along its normal, on half of each neighbouring
+      // segment's length; none on the clamped base corners.
       Eigen::Matrix2d added_mass = Eigen::Matrix2d::Zero();
       if (k > 0 && k < last && mass_per_area > 0.0) {
         const double length = 0.5 * ((pts[k] - pts[k - 1]).norm() + (pts[k + 1] - pts[k]).norm());
@@ -264,10 +263,10 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
   for (auto& l : loads_) l->set_time_step(dt);  // section 13
   for (auto& face : breakdown_.contact) face[0] = face[1] = 0.0;
   const Eigen::VectorXd u_before = solver_->displacement();
-  // The water's work on the plate over the step, part by part: the trapezoid of each part's nodal force at
-  // the step's start and end times the node's displacement over it, the discrete work of the trapezoidal rule
-  // (with gamma = 1/2 the plate's energy then changes by exactly this; with gamma > 1/2 the difference is the
-  // Newmark dissipation).
+  // The water's work on the plate over the step, part by part: the trapezoid of each part's nodal force at the
+  // step's start and end times the node's displacement over it, the discrete work of the trapezoidal rule (with
+  // gamma = 1/2 the plate's energy then changes by exactly this; with gamma > 1/2 the difference is the Newmark
+  // dissipation).
   auto add_work = [&] {
     double* work[3] = {&breakdown_.work_wall, &breakdown_.work_added_mass, &breakdown_.work_contact};
     for (int part = 0; part < 3; ++part) {
@@ -320,8 +319,8 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
   }
   // Unilateral contact by an active set: an invader the converged solve pulls towards the plate (normal force
   // C . n < 0, the plate moving away faster than the target allows) is released and Newton continues from the
-  // current iterate with the others. A released particle keeps its predicted state, so only particles
-  // predicted outside the surface (in the layer) may be released: one predicted past it stays in the solve.
+  // current iterate with the others. A released particle keeps its predicted state, so only particles predicted
+  // outside the surface (in the layer) may be released: one predicted past it stays in the solve.
   std::vector<int> active(gathered.size());
   for (std::size_t k = 0; k < active.size(); ++k) active[k] = static_cast<int>(k);
   const auto& segments = solver_->mesh().surface;
@@ -347,8 +346,8 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
   solver_->end_step();
   last_.newton_iterations = iterations;
   add_surface_forces();
-  // The contact's share of the load breakdown: each active invader's force, its opposite on the plate shared
-  // by its segment's points ((1 - eta), eta as in eq. 19), and its work over the step.
+  // The contact's share of the load breakdown: each active invader's force, its opposite on the plate shared by
+  // its segment's points ((1 - eta), eta as in eq. 19), and its work over the step.
   for (std::size_t j = 0; j < active.size(); ++j) {
     const ContactInvader& c = invaders[static_cast<std::size_t>(active[j])];
     const Eigen::Vector2d on_plate = -system_->forces()[j];
@@ -390,8 +389,7 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
       out.dvx = out.dx / dt;
       out.dvy = out.dy / dt;
     } else {
-      // Inelastic contact without the relocation's velocity: remove the normal approach relative to the
-      // surface.
+      // Inelastic contact without the relocation's velocity: remove the normal approach relative to the surface.
       const auto& seg = segments[static_cast<std::size_t>(invaders[k].segment)];
       const Eigen::Vector2d xf = solver_->position(seg.first), xs = solver_->position(seg.second);
       const Eigen::Vector2d d = xs - xf;
@@ -468,12 +466,12 @@ const CouplingStepReport& ContactCoupling::step(double t, double dt, const Inter
     MPI_Bcast(&breakdown_, 21, MPI_DOUBLE, root_, comm_.get());
     const std::vector<Eigen::Vector2d> before = surface_.points;
     broadcast_surface();
-    // The surface's velocity for the water is its mean velocity over the step, (x_n+1 - x_n) / dt: the
-    // Newmark (trapezoidal) nodal velocity carries the plate's undamped high-frequency content, v_n+1 = 2
-    // (u_n+1 - u_n) / dt - v_n, and fed back through the plate-wall ghosts it grew into a plate-water
-    // oscillation (docs/coupling.md). Explicit exchange: extrapolated to the coming step's middle, 2 v_n+1/2
-    // - v_n-1/2; the converged exchange uses this step's own motion (Fluid::update_density) and has the
-    // faces' velocity in the next force computation lag half a step (the viscous term only).
+    // The surface's velocity for the water is its mean velocity over the step, (x_n+1 - x_n) / dt: the Newmark
+    // (trapezoidal) nodal velocity carries the plate's undamped high-frequency content, v_n+1 = 2 (u_n+1 - u_n) /
+    // dt - v_n, and fed back through the plate-wall ghosts it grew into a plate-water oscillation (docs/coupling.md).
+    // Explicit exchange: extrapolated to the coming step's middle, 2 v_n+1/2 - v_n-1/2; the converged exchange uses
+    // this step's own motion (Fluid::update_density) and has the faces' velocity in the next force computation lag
+    // half a step (the viscous term only).
     if (before.size() == surface_.points.size()) {
       const bool first = mean_velocity_.size() != 2 * before.size();
       mean_velocity_.resize(2 * before.size());
@@ -539,8 +537,8 @@ void ContactCoupling::restore_state(const std::vector<double>& state) {
   std::copy(p, p + 21, reinterpret_cast<double*>(&breakdown_));
   p += 21;
   const std::size_t loads = take_count(5);
-  // One load per surface point: the root's count (a checkpoint holds the root's copy on every rank), or, for
-  // a step taken back within a run, this rank's own (none off the root).
+  // One load per surface point: the root's count (a checkpoint holds the root's copy on every rank), or, for a step
+  // taken back within a run, this rank's own (none off the root).
   if (loads != surface_.points.size() && loads != loads_.size())
     HALFETI_USER_ERROR("restart: the coupling's state has " << loads << " surface loads, this scene's plate "
                                                             << surface_.points.size());

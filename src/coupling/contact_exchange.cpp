@@ -1,5 +1,5 @@
-// The converged plate-water exchange's verdict on one evaluation of the water's load (docs/coupling.md,
-// section 16): ContactCoupling::converge_exchange, kept apart from the coupled step it repeats.
+// The converged plate-water exchange's verdict on one evaluation of the water's load (docs/coupling.md, section 16):
+// ContactCoupling::converge_exchange, kept apart from the coupled step it repeats.
 #include <cstdio>
 
 #include "halfeti/core/error.hpp"
@@ -33,11 +33,11 @@ ExchangeIterate ContactCoupling::converge_exchange(const std::vector<sph::PlateW
           out.iteration, verdict[0], last_.invaders, produced.norm(), point, surface_.points[point].x(),
           surface_.points[point].y(), in(worst), produced(worst));
     }
-    // The water's load is piecewise smooth in the plate's motion: a particle within round-off of a face is
-    // water on one side and the contact's on the other, and its ghost load (up to half the plate's total,
-    // measured on the paper's plate) switches with it. Where that keeps the exchange from converging, the
-    // iteration stops after kStall evaluations without a new best, or at max_iterations, and the step is
-    // taken with the best iterate (evaluated once more when it was not the last).
+    // The water's load is piecewise smooth in the plate's motion: a particle within round-off of a face is water on
+    // one side and the contact's on the other, and its ghost load (up to half the plate's total, measured on the
+    // paper's plate) switches with it. Where that keeps the exchange from converging, the iteration stops after
+    // kStall evaluations without a new best, or at max_iterations, and the step is taken with the best iterate
+    // (evaluated once more when it was not the last).
     constexpr int kStall = 3;
     if (out.iteration == 0 || verdict[0] < best_residual_) {
       best_residual_ = verdict[0];

@@ -27,8 +27,8 @@ SegmentProjection project_on_segment(const Eigen::Vector2d& x, const Eigen::Vect
 }
 
 namespace {
-// The scan's rule, shared by both searches: the nearer segment wins; at equal distance the one the point
-// stands further in front of (the larger gap).
+// The scan's rule, shared by both searches: the nearer segment wins; at equal distance the one the point stands
+// further in front of (the larger gap).
 void keep_closer(ContactPoint& best, int k, const SegmentProjection& p) {
   const bool closer = best.segment < 0 || p.distance < best.projection.distance;
   const bool tie_in_front =

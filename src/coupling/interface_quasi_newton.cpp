@@ -1,8 +1,7 @@
 // IQN-ILS (Degroote et al. 2009, section 3): from the iterations i = 0..k of one time step, with residuals
-// r_i = H(x_i) - x_i and outputs y_i = H(x_i), the columns V = [r_k - r_i] and W = [y_k - y_i] (i < k) model
-// how the output changes with the residual, W = J V. The least-squares coefficients c of min ||V c + r_k||
-// give the change that drives the residual to zero in the secant model, and the next input is x_k+1 = y_k + W
-// c.
+// r_i = H(x_i) - x_i and outputs y_i = H(x_i), the columns V = [r_k - r_i] and W = [y_k - y_i] (i < k) model how
+// the output changes with the residual, W = J V. The least-squares coefficients c of min ||V c + r_k|| give the
+// change that drives the residual to zero in the secant model, and the next input is x_k+1 = y_k + W c.
 #include "halfeti/coupling/interface_quasi_newton.hpp"
 
 #include "halfeti/core/error.hpp"

@@ -17,8 +17,8 @@ LatticeAlignment align_plate_with_lattice(const structure::PlateGeometry& g, dou
     a.offsets = {lattice_right - right, left - lattice_left, lattice_top - top};
     a.exclusion = {lattice_left, g.base_centre.y() - dx, lattice_right, lattice_top};
   } else {
-    // Hanging (the standing plate turned about its clamp): the free end is the bottom, rounded down on a tie;
-    // the offsets are in the plate's frame, whose "right" face (the outline's first) is the tank's left face.
+    // Hanging (the standing plate turned about its clamp): the free end is the bottom, rounded down on a tie; the
+    // offsets are in the plate's frame, whose "right" face (the outline's first) is the tank's left face.
     const double bottom = g.base_centre.y() - g.height;
     const double lattice_bottom = y0 + dx * std::ceil((bottom - y0) / dx - 0.5);
     a.offsets = {left - lattice_left, lattice_right - right, bottom - lattice_bottom};

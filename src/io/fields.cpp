@@ -106,8 +106,8 @@ std::string FieldSeries::write(double time, std::size_t n_local, const double* x
 }
 
 void FieldSeries::resume(double time) {
-  // Rank 0 reads the series' files in order and keeps those at or before `time` (within round-off of it),
-  // removing the later ones; the others keep the count, which names the next file.
+  // Rank 0 reads the series' files in order and keeps those at or before `time` (within round-off of it), removing
+  // the later ones; the others keep the count, which names the next file.
   int rank = 0;
   MPI_Comm_rank(comm_, &rank);
   frames_.clear();

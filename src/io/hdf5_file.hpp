@@ -1,6 +1,6 @@
 // HDF5 helpers shared by the field series and the checkpoints (private to the io library): an owner for HDF5
-// identifiers, checked calls whose failure names what failed and why, and the collective 1-D slab write and
-// the whole-dataset read both file kinds are made of.
+// identifiers, checked calls whose failure names what failed and why, and the collective 1-D slab write and the
+// whole-dataset read both file kinds are made of.
 #pragma once
 
 #include <hdf5.h>
@@ -11,14 +11,14 @@
 
 namespace halfeti::io::h5 {
 
-// What a failed call was doing: writing an output (an I/O error, exit status 6, with the system's reason when
-// it left one in errno) or reading a file the user named (bad input, exit status 2).
+// What a failed call was doing: writing an output (an I/O error, exit status 6, with the system's reason when it
+// left one in errno) or reading a file the user named (bad input, exit status 2).
 enum class Use { kWrite, kRead };
 [[noreturn]] void fail(Use use, const std::string& what);
 
-// While one lives, the write checks are collective over its communicator: a file written collectively has
-// every rank make the same calls in the same order, and a call that fails on one rank (a full disk seen by
-// the rank that writes a block) must fail on all, or the others wait in the next collective call forever.
+// While one lives, the write checks are collective over its communicator: a file written collectively has every
+// rank make the same calls in the same order, and a call that fails on one rank (a full disk seen by the rank that
+// writes a block) must fail on all, or the others wait in the next collective call forever.
 class CollectiveWrites {
  public:
   // `file`: the path being written, for the reason of a failure (its file system's free space).
@@ -60,8 +60,8 @@ class Id {
 
 void quiet();  // no HDF5 error stacks on stderr: our messages name what failed
 
-// Collective: this rank's `count` rows at row `offset` of a dataset of `total` rows, in `where` (a file or
-// group): 1-D with one column, `total` x `columns` (row-major) with more.
+// Collective: this rank's `count` rows at row `offset` of a dataset of `total` rows, in `where` (a file or group):
+// 1-D with one column, `total` x `columns` (row-major) with more.
 void write_slab(hid_t where, const std::string& name, hid_t type, const void* data, long long offset,
                 long long count, long long total, const std::string& file, int columns = 1);
 
@@ -88,8 +88,7 @@ void write_dataset_attribute(hid_t where, const std::string& dataset, const std:
 std::string read_dataset_attribute(hid_t where, const std::string& dataset, const std::string& name,
                                    const std::string& file);
 
-// Creates (truncating) `path` for collective writing over MPI-IO; a negative id on failure (check it with
-// Id).
+// Creates (truncating) `path` for collective writing over MPI-IO; a negative id on failure (check it with Id).
 hid_t create_collective(MPI_Comm comm, const std::string& path);
 
 }  // namespace halfeti::io::h5

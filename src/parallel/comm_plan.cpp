@@ -9,10 +9,10 @@
 namespace halfeti::parallel {
 
 namespace {
-// Tags of the plan's point-to-point messages. The discovery's alternate between successive rounds, so that a
-// rank still in round k (its barrier done but not yet tested) cannot take a faster rank's round k + 1 count
-// as its own; every rank calls discover() in the same order, so the round counter agrees. Counts and data
-// name their source, and MPI keeps messages of one source and tag in order.
+// Tags of the plan's point-to-point messages. The discovery's alternate between successive rounds, so that a rank
+// still in round k (its barrier done but not yet tested) cannot take a faster rank's round k + 1 count as its own;
+// every rank calls discover() in the same order, so the round counter agrees. Counts and data name their source,
+// and MPI keeps messages of one source and tag in order.
 constexpr int kTagCounts = 7101, kTagDiscover = 7102, kTagData = 7104;
 int discover_round = 0;
 

@@ -20,8 +20,8 @@ HaloPlan::HaloPlan(MPI_Comm comm, const CellGrid& grid, const std::vector<int>& 
   if (size == 1) return;
   single_ = false;
 
-  // Ranks that see each cell's particles as ghosts: the owners of the 8 surrounding cells, except the cell's
-  // own (each one of `peers`). Computed per occupied cell once, then applied to its particles.
+  // Ranks that see each cell's particles as ghosts: the owners of the 8 surrounding cells, except the cell's own
+  // (each one of `peers`). Computed per occupied cell once, then applied to its particles.
   std::vector<std::vector<int>> per_peer(peers.size());
   int last_cell = -1;
   int targets[8];

@@ -40,8 +40,8 @@ double resolved_sound_speed(const FluidParams& p) {
   double depth = 0.0;
   for (const auto& b : p.water) depth = std::max(depth, b.y1 + std::abs(b.surface_amplitude) - b.y0);
   HALFETI_CHECK(depth > 0.0, "no water to size the sound speed on");
-  // eq. 10 with u_b = sqrt(g d) (long-wave speed), F = g + peak ground acceleration, l = d, aiming at half
-  // the allowed density variation so that the hydrostatic state alone stays clear of the 1% monitor.
+  // eq. 10 with u_b = sqrt(g d) (long-wave speed), F = g + peak ground acceleration, l = d, aiming at half the
+  // allowed density variation so that the hydrostatic state alone stays clear of the 1% monitor.
   return sound_speed_eq10(std::sqrt(p.gravity * depth), p.gravity + std::abs(p.peak_ground_acceleration),
                           depth, 0.5 * p.max_density_variation);
 }
@@ -107,8 +107,8 @@ void Fluid::initialise_particles() {
         const double px = b.x0 + (i + 0.5) * dx_, py = b.y0 + (j + 0.5) * dx_;
         const double surface = b.y1 + b.surface_amplitude * std::cos(M_PI * px / params_.tank_length);
         if (py >= surface || near_internal_wall(px, py) || excluded(px, py)) continue;
-        // Hydrostatic initial state: p = rho0 g (surface - y), density from eq. 9; each particle stands for a
-        // dx^2 cell of water at its density.
+        // Hydrostatic initial state: p = rho0 g (surface - y), density from eq. 9; each particle stands for a dx^2
+        // cell of water at its density.
         const double rho = density_from_pressure(rho0 * g * (surface - py), rho0, c0_);
         all.gid.push_back(next++);
         all.x.push_back(px);
@@ -267,8 +267,7 @@ void Fluid::compute_forces() {
         a2 = std::max(a2, rates_.ax[i] * rates_.ax[i] + rates_.ay[i] * rates_.ay[i]);
       rates_.max_accel = std::sqrt(a2);
     }
-    // Time step: CFL on sound and viscous signal speed and the force limit (Monaghan 1989 style); max is
-    // exact.
+    // Time step: CFL on sound and viscous signal speed and the force limit (Monaghan 1989 style); max is exact.
     double m[2] = {rates_.max_mu, rates_.max_accel};
     MPI_Allreduce(MPI_IN_PLACE, m, 2, MPI_DOUBLE, MPI_MAX, comm_.get());
     double dt = params_.cfl * kernel_.h / (c0_ + m[0]);
@@ -365,15 +364,14 @@ void Fluid::apply_corrections(const std::vector<int>& touched, const double* dx,
   HALFETI_CHECK(predicted_ && !density_pending_,
                 "Fluid::apply_corrections() belongs between predict() (and update_density()) and finish()");
   ScopedTimer t(timers_, "integrate");
-  // The tank's walls bound a correction. The contact solve knows only the plate, and at the plate's foot the
-  // face's normal tilts towards the floor as the plate bends (and under a hanging gate's free end it points
-  // at the floor): a particle pushed out of the plate there would be pushed into the floor. So a correction
-  // may not bring a particle closer to a wall than the nearer of its predicted distance and the wall
-  // repulsion's range (dx/2), and a particle that ends within one spacing of a wall keeps no velocity
-  // correction into it: the rigid wall takes that part of the contact's impulse. (With `velocity_update:
-  // acceleration` the particle would otherwise carry the relocation's speed, up to dx/dt, into the floor
-  // within a step or two: the Antoci gate at dx 2 mm lost a particle through the floor under its free end at
-  // 0.037 s so; holding only those within dx/2 did not help.)
+  // The tank's walls bound a correction. The contact solve knows only the plate, and at the plate's foot the face's
+  // normal tilts towards the floor as the plate bends (and under a hanging gate's free end it points at the floor):
+  // a particle pushed out of the plate there would be pushed into the floor. So a correction may not bring a
+  // particle closer to a wall than the nearer of its predicted distance and the wall repulsion's range (dx/2), and
+  // a particle that ends within one spacing of a wall keeps no velocity correction into it: the rigid wall takes
+  // that part of the contact's impulse. (With `velocity_update: acceleration` the particle would otherwise carry
+  // the relocation's speed, up to dx/dt, into the floor within a step or two: the Antoci gate at dx 2 mm lost a
+  // particle through the floor under its free end at 0.037 s so; holding only those within dx/2 did not help.)
   const double keep = 0.5 * dx_, L = params_.tank_length;
   for (int i : touched) {
     HALFETI_DEBUG_CHECK(i >= 0 && i < n_owned_, "correction for particle " << i << " of " << n_owned_);

@@ -26,8 +26,7 @@ std::string point(double x, double y) {
 void Fluid::warn(const std::string& kind, bool active, bool cleared, const std::string& message, double value,
                  double x, double y) {
   // One event when a condition starts; re-armed only once it has clearly gone (hysteresis), so a measure that
-  // hovers at its threshold does not flood the list. While it holds, the episode keeps its worst value and
-  // place.
+  // hovers at its threshold does not flood the list. While it holds, the episode keeps its worst value and place.
   auto it = std::find(active_warnings_.begin(), active_warnings_.end(), kind);
   if (active && it == active_warnings_.end()) {
     active_warnings_.push_back(kind);
@@ -53,9 +52,8 @@ void Fluid::fatal(const std::string& kind, const std::string& message) {
 }
 
 void Fluid::remove_spilled() {
-  // The tank is open at the top: water thrown over it leaves the run, as it would leave the real tank.
-  // Removed in place (owned particles are compacted before migration), counted, and reported once per
-  // episode.
+  // The tank is open at the top: water thrown over it leaves the run, as it would leave the real tank. Removed in
+  // place (owned particles are compacted before migration), counted, and reported once per episode.
   const double H = params_.tank_height;
   long removed = 0, key = std::numeric_limits<long>::max();
   double mass = 0.0, first_x = 0.0, first_y = 0.0;
@@ -93,8 +91,8 @@ void Fluid::remove_spilled() {
   // Worst: the water spilled so far [kg/m]; place: where the first particle over the top (lowest id) was.
   double place[2] = {first_x, first_y};
   if (sums[0] > 0) MPI_Bcast(place, 2, MPI_DOUBLE, first_rank(comm_.get(), removed > 0, key), comm_.get());
-  // One episode while water keeps leaving: it ends after 0.05 s without a spill (a sloshing wave throws its
-  // crest over the top particle by particle, over a few steps each).
+  // One episode while water keeps leaving: it ends after 0.05 s without a spill (a sloshing wave throws its crest
+  // over the top particle by particle, over a few steps each).
   constexpr double kQuiet = 0.05;                     // [s]
   const HealthEvent* open = open_warning("spilled");  // before warn() opens or closes one
   const bool quiet = sums[0] == 0 && (!open || time_ - open->worst_time > kQuiet);
@@ -202,8 +200,8 @@ void Fluid::check_health() {
 }
 
 int Fluid::closest_pair_particle(double dmin) const {
-  // The owned particle with a neighbour at dmin (the search's own minimum, so an exact match exists on the
-  // rank that found it; -1 elsewhere). The pair list holds the offsets at the search.
+  // The owned particle with a neighbour at dmin (the search's own minimum, so an exact match exists on the rank
+  // that found it; -1 elsewhere). The pair list holds the offsets at the search.
   const double r2 = dmin * dmin;
   if (pairs_.start.size() != static_cast<std::size_t>(n_owned_) + 1) return -1;  // particles spilled since
   for (int i = 0; i < n_owned_; ++i)

@@ -41,12 +41,10 @@ void momentum_rates(const ParticleView& pv, const PairList& pairs, const PairLis
       // eq. 4 pressure term in the symmetric volume form -(1/rho_i) sum (p_i + p_j) V_j grad_i W_ij
       // (the 1/rho_i is applied after the sum)
       double scalar = -(pi + pv.p[j]) * vj;
-      // eq. 8: pi_ij = (u_j - u_i).(r_j - r_i) / (|r_ji|^2 + eta^2); eq. 4: + alpha h c0 rho0 / rho_i sum
-      // pi_ij V_j grad W
+      // eq. 8: pi_ij = (u_j - u_i).(r_j - r_i) / (|r_ji|^2 + eta^2); eq. 4: + alpha h c0 rho0 / rho_i sum pi_ij V_j grad W
       const double u_dot_r = du * ex + dv * ey, mu = u_dot_r / (r2 + eta2);
       scalar += viscosity * mu * vj;
-      if (k.tensile) {  // Monaghan (2000): - m_j (R_i + R_j) (W_ij / W(dx))^4 grad_i W_ij (times rho_i /
-                        // rho_i)
+      if (k.tensile) {  // Monaghan (2000): - m_j (R_i + R_j) (W_ij / W(dx))^4 grad_i W_ij (times rho_i / rho_i)
         const double fij = pairs.w[q] * inv_w_dx, f2 = fij * fij;
         scalar -= rhoi * pv.mass[j] * (ri_t + tensile[j]) * f2 * f2;
       }
@@ -60,18 +58,17 @@ void momentum_rates(const ParticleView& pv, const PairList& pairs, const PairLis
     max_mu = std::max(max_mu, k.h * mu_i);
 
     // Wall pressure: the eq. 4 pressure term over the ghost points behind the walls, their pressure continued
-    // from particle i as a first-order Taylor expansion, p_g = p_i + (dp/dn)(n.r_gi) + (dp/dt)(t.r_gi).
-    // Across the wall, the wall condition dp/dn = rho_i b.n (the wall is at rest in the tank frame). Along
-    // it, the particle's own gradient c0^2 <grad rho>^L_i.t (eqs. 6, 9): the hydrostatic slope rho_i b.t in
-    // still water (as Adami et al. 2012), none in a film whose pressure does not vary along the wall (the
-    // body force's slope there held up a fifth of a film's weight). It is bounded by rho_i |b|, so that the
-    // ghosts never accelerate a particle along the wall by more than the body force: unbounded, the gradient
-    // at the tip of a film in tension pushed the tip away from the film, which stretched it further
-    // (docs/sph.md "Wall films"). Corner quadrants lie behind two walls: the wall condition in both
-    // directions, p_g = p_i + rho_i b.r_gi. Not clamped: a particle in tension (p_i < 0) next to a wall must
-    // see its tension continued behind the wall, or the truncated fluid sum -(1/rho_i) sum (p_i + p_j) V_j
-    // grad W pushes it off the wall by about 2 |p_i| / (rho h), it expands and its pressure falls further
-    // (docs/sph.md, "Walls").
+    // from particle i as a first-order Taylor expansion, p_g = p_i + (dp/dn)(n.r_gi) + (dp/dt)(t.r_gi). Across
+    // the wall, the wall condition dp/dn = rho_i b.n (the wall is at rest in the tank frame). Along it, the
+    // particle's own gradient c0^2 <grad rho>^L_i.t (eqs. 6, 9): the hydrostatic slope rho_i b.t in still water
+    // (as Adami et al. 2012), none in a film whose pressure does not vary along the wall (the body force's slope
+    // there held up a fifth of a film's weight). It is bounded by rho_i |b|, so that the ghosts never accelerate
+    // a particle along the wall by more than the body force: unbounded, the gradient at the tip of a film in
+    // tension pushed the tip away from the film, which stretched it further (docs/sph.md "Wall films").
+    // Corner quadrants lie behind two walls: the wall condition in both directions, p_g = p_i + rho_i b.r_gi.
+    // Not clamped: a particle in tension (p_i < 0) next to a wall must see its tension continued behind the wall,
+    // or the truncated fluid sum -(1/rho_i) sum (p_i + p_j) V_j grad W pushes it off the wall by about
+    // 2 |p_i| / (rho h), it expands and its pressure falls further (docs/sph.md, "Walls").
     const bool taylor = !grad_rho.empty();
     const double gpx = taylor ? k.c0 * k.c0 * grad_rho[2 * i] : 0.0;  // eq. 9: grad p = c0^2 grad rho
     const double gpy = taylor ? k.c0 * k.c0 * grad_rho[2 * i + 1] : 0.0;
@@ -87,8 +84,8 @@ void momentum_rates(const ParticleView& pv, const PairList& pairs, const PairLis
           p_ghost += (own - rhoi * (k.body_x * tx + k.body_y * ty)) * along;
         }
         double s = -(pi + p_ghost) * ghosts.volume[g] / rhoi * -ghost_pairs.f[q];
-        // eq. 8 with the ghost's velocity: mirrored (free slip, u_g - u_i = -2 (u_i.n) n, only the
-        // wall-normal motion is damped) or reversed (no slip, u_g - u_i = -2 u_i)
+        // eq. 8 with the ghost's velocity: mirrored (free slip, u_g - u_i = -2 (u_i.n) n, only the wall-normal
+        // motion is damped) or reversed (no slip, u_g - u_i = -2 u_i)
         const double ex = ghost_pairs.ex[q], ey = ghost_pairs.ey[q], r2 = ex * ex + ey * ey;
         const double du_dot_e = k.wall_no_slip ? -2.0 * (ui * ex + vi * ey)
                                                : -2.0 * (ui * ghosts.nx[g] + vi * ghosts.ny[g]) *
@@ -140,19 +137,16 @@ void continuity_rates(const ParticleView& pv, const PairList& pairs, const PairL
       const double ex = pairs.ex[q], ey = pairs.ey[q], f = pairs.f[q];
       const double vj = pv.volume[j];
       const double du = pv.vx[j] - ui, dv = pv.vy[j] - vi;
-      // eq. 3, first term, in Marrone et al.'s (2011) form -rho_i sum V_j (u_j - u_i).grad_i W_ij, grad_i W =
-      // -F r_ji
+      // eq. 3, first term, in Marrone et al.'s (2011) form -rho_i sum V_j (u_j - u_i).grad_i W_ij, grad_i W = -F r_ji
       div -= vj * f * (du * ex + dv * ey);
       if (use_delta) {
-        // eqs. 3, 5: delta h c0 sum V_j psi_ij.grad_i W_ij, psi_ij = 2 (rho_j - rho_i) r_ji / r^2 - (grad^L_i
-        // + grad^L_j) (two particles at one point, which the contact's relocation can produce, have no
-        // direction: 0)
+        // eqs. 3, 5: delta h c0 sum V_j psi_ij.grad_i W_ij, psi_ij = 2 (rho_j - rho_i) r_ji / r^2 - (grad^L_i + grad^L_j)
+        // (two particles at one point, which the contact's relocation can produce, have no direction: 0)
         const double r2 = ex * ex + ey * ey, s = r2 > 0.0 ? 2.0 * (pv.rho[j] - rhoi) / r2 : 0.0;
         const double psx = s * ex - (gri_x + grad_rho[2 * j]), psy = s * ey - (gri_y + grad_rho[2 * j + 1]);
         diff -= vj * f * (psx * ex + psy * ey);
       }
-      // eq. 11 (XSPH), written towards the neighbours' mean velocity: eps sum m_j (u_j - u_i) / rho_bar_ij
-      // W_ij
+      // eq. 11 (XSPH), written towards the neighbours' mean velocity: eps sum m_j (u_j - u_i) / rho_bar_ij W_ij
       const double wm = pv.mass[j] * pairs.w[q] / (0.5 * (rhoi + pv.rho[j]));
       xs += wm * du;
       ys += wm * dv;

@@ -30,8 +30,8 @@ void bin(const parallel::CellGrid& g, const double* x, const double* y, int n, K
   items.resize(n);
   std::vector<int> fill(start.begin(), start.end() - 1);
   for (int i = 0; i < n; ++i) items[fill[cell_of[i]]++] = i;
-  // Usually already in key order (owned particles are kept sorted by cell and id, and a cell's ghosts all
-  // come from its one owner in that order), so the sort rarely runs.
+  // Usually already in key order (owned particles are kept sorted by cell and id, and a cell's ghosts all come
+  // from its one owner in that order), so the sort rarely runs.
   for (int c = 0; c < nc; ++c) {
     auto b = items.begin() + start[c], e = items.begin() + start[c + 1];
     const auto less = [&](int a, int bb) { return key(a) < key(bb); };
@@ -109,8 +109,8 @@ void NeighbourSearch::fluid_pairs(const double* x, const double* y, const std::i
     bx_[k] = x[cell_items_[k]];
     by_[k] = y[cell_items_[k]];
   }
-  // The pair arrays are sized once for about 24 pairs a particle (or what the last search needed), grown when
-  // a particle needs more and cut to the count at the end.
+  // The pair arrays are sized once for about 24 pairs a particle (or what the last search needed), grown when a
+  // particle needs more and cut to the count at the end.
   out.start.assign(n_owned + 1, 0);
   std::size_t n_pairs = 0, room = std::max(out.j.capacity(), static_cast<std::size_t>(n_owned) * 24);
   out.resize(room);
@@ -120,9 +120,9 @@ void NeighbourSearch::fluid_pairs(const double* x, const double* y, const std::i
   for (int i = 0; i < n_owned; ++i) {
     const int c = cell_of_[i], cx = c % grid_.nx, cy = c / grid_.nx;
     const double xi = x[i], yi = y[i];
-    // Only a barrier within the support of particle i can cross a pair of it (the crossing point lies on the
-    // pair, closer to i than the pair's length): those of its cell's list, found once per particle (most of
-    // the tank has none). The 1e-9 margin keeps every barrier a rounded crossing test could see.
+    // Only a barrier within the support of particle i can cross a pair of it (the crossing point lies on the pair,
+    // closer to i than the pair's length): those of its cell's list, found once per particle (most of the tank
+    // has none). The 1e-9 margin keeps every barrier a rounded crossing test could see.
     near_barriers_.clear();
     if (barriers)
       for (int k = barrier_start_[c]; k < barrier_start_[c + 1]; ++k) {
@@ -133,10 +133,10 @@ void NeighbourSearch::fluid_pairs(const double* x, const double* y, const std::i
     const bool near_barrier = !near_barriers_.empty();
     const int x_lo = std::max(cx - 1, 0), x_hi = std::min(cx + 1, grid_.nx - 1);
     // Global cell order (rows ascending, and within a row the cells ascending), then global id inside a cell.
-    // Three passes: the candidates within the support are kept without a branch on the distance (in a
-    // disordered flow r < 2h is unpredictable, and mispredicted branches cost more than the stores), the kept
-    // pairs are tested against the near barriers, and the kernel is evaluated for the survivors in one
-    // vectorised loop. The order, and so every sum over the pairs, is unchanged.
+    // Three passes: the candidates within the support are kept without a branch on the distance (in a disordered
+    // flow r < 2h is unpredictable, and mispredicted branches cost more than the stores), the kept pairs are
+    // tested against the near barriers, and the kernel is evaluated for the survivors in one vectorised loop. The
+    // order, and so every sum over the pairs, is unchanged.
     int kept = 0;
     for (int jy = std::max(cy - 1, 0); jy <= std::min(cy + 1, grid_.ny - 1); ++jy) {
       const int k_begin = cell_start_[jy * grid_.nx + x_lo], k_end = cell_start_[jy * grid_.nx + x_hi + 1];

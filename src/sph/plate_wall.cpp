@@ -1,5 +1,4 @@
-// The plate's surface as a moving wall in the SPH sums (docs/coupling.md, section 12, "The plate in the SPH
-// sums").
+// The plate's surface as a moving wall in the SPH sums (docs/coupling.md, section 12, "The plate in the SPH sums").
 #include "halfeti/sph/plate_wall.hpp"
 
 #include <algorithm>
@@ -37,9 +36,8 @@ void PlateWall::offset_outline(const PlateOutline& o, double dx) {
   point_.resize(n);
   for (int k = 0; k < n; ++k) point_[k] = k;
   outline_ = o;
-  // The corners: found on the first outline (the plate at rest, its top turning by 90 degrees) and kept,
-  // since the surface's topology never changes (a strongly bent plate can turn by more than 45 degrees
-  // elsewhere).
+  // The corners: found on the first outline (the plate at rest, its top turning by 90 degrees) and kept, since
+  // the surface's topology never changes (a strongly bent plate can turn by more than 45 degrees elsewhere).
   if (n != corner_points_) {
     std::tie(corner_right_, corner_left_) = outline_corners(o);
     corner_points_ = n;
@@ -184,8 +182,7 @@ void PlateWall::set_outline(const PlateOutline& true_outline, double dx, double 
   double shortest = std::numeric_limits<double>::max();
   for (int k = 0; k < right_end_; ++k) shortest = std::min(shortest, arc_[k] - arc_[k + 1]);
   for (int k = left_start_; k + 1 < n; ++k) shortest = std::min(shortest, arc_[k + 1] - arc_[k]);
-  // The point at arc length s down a face: its position, the outward normal and the right face's segment
-  // there.
+  // The point at arc length s down a face: its position, the outward normal and the right face's segment there.
   auto at = [&](bool right, double s, double& px, double& py, double& nx, double& ny, int& seg) {
     int k = right ? right_end_ - 1 : left_start_;  // segment k: points k, k + 1 of the outline
     if (right)
@@ -200,9 +197,8 @@ void PlateWall::set_outline(const PlateOutline& true_outline, double dx, double 
     ny = -(x1 - x0) / l;
     seg = right ? k : n - 2 - k;
   };
-  // Rows every dx down the plate from the top corners, (j + 1/2) dx below them, as the water lattice's rows:
-  // body ghosts across the thickness and band ghosts (m + 1/2) dx beyond each face, each standing for one
-  // lattice cell.
+  // Rows every dx down the plate from the top corners, (j + 1/2) dx below them, as the water lattice's rows: body
+  // ghosts across the thickness and band ghosts (m + 1/2) dx beyond each face, each standing for one lattice cell.
   const int bands = static_cast<int>(std::ceil(support / dx - 0.5)) + 1;
   const double length = std::min(arc_[0], arc_[n - 1]);
   for (int j = 0; (j + 0.5) * dx < length; ++j) {
@@ -252,15 +248,14 @@ void PlateWall::set_outline(const PlateOutline& true_outline, double dx, double 
   run_start_.push_back(n - 1);
   dx_ = dx;
   row_window_ = static_cast<int>(std::ceil(support / dx)) + 1;
-  // Segments a particle's support can reach on either side of its own (segments are at least `shortest`
-  // long).
+  // Segments a particle's support can reach on either side of its own (segments are at least `shortest` long).
   fibre_window_ = static_cast<int>(std::ceil(support / shortest)) + 2;
 }
 
 bool PlateWall::hidden(double xi, double yi, double xg, double yg, int fibre) const {
   // The mid-line segments near the ghost's fibre (a segment between points within the support cannot reach
-  // further along the plate than the fibre window); one whose box misses the pair's box cannot cross it, and
-  // the box test skips most of the window.
+  // further along the plate than the fibre window); one whose box misses the pair's box cannot cross it, and the
+  // box test skips most of the window.
   const int lo = std::max(0, fibre - fibre_window_), hi = std::min(fibres_, fibre + fibre_window_);
   const double x0 = std::min(xi, xg), x1 = std::max(xi, xg), y0 = std::min(yi, yg), y1 = std::max(yi, yg);
   for (int q = lo; q < hi; ++q) {
@@ -273,10 +268,9 @@ bool PlateWall::hidden(double xi, double yi, double xg, double yg, int fibre) co
 
 void PlateWall::closest_point(double xi, double yi, double reach, int& best, double& best_d, double& best_g,
                               double& best_eta) const {
-  // Closest point of the outline (eq. 20's projection, clamped); at a convex corner the tie goes to the face
-  // the particle stands more clearly in front of (as the contact search). Runs whose box is farther than the
-  // best so far (or than the reach) cannot hold it: skipping them gives the full scan's answer, ties
-  // included.
+  // Closest point of the outline (eq. 20's projection, clamped); at a convex corner the tie goes to the face the
+  // particle stands more clearly in front of (as the contact search). Runs whose box is farther than the best so
+  // far (or than the reach) cannot hold it: skipping them gives the full scan's answer, ties included.
   const auto& o = outline_;
   // (Compared as squared distances: one square root at the end.)
   best = -1;
@@ -337,18 +331,17 @@ void PlateWall::find_pairs(const double* x, const double* y, int n, const Kernel
     int best;
     double best_d, best_g, best_eta;
     closest_point(xi, yi, r, best, best_d, best_g, best_eta);
-    // Particles inside the plate are the contact's (eqs. 19-23), not the wall's. One on the surface is water:
-    // the contact puts the particles it pushes out exactly there (docs/coupling.md, section 15), and without
-    // the ghosts their half-empty support would push them straight back in.
+    // Particles inside the plate are the contact's (eqs. 19-23), not the wall's. One on the surface is water: the
+    // contact puts the particles it pushes out exactly there (docs/coupling.md, section 15), and without the
+    // ghosts their half-empty support would push them straight back in.
     if (best < 0 || best_d >= r || best_g < 0.0) continue;
     const double cx = o.x[best] + best_eta * (o.x[best + 1] - o.x[best]);
     const double cy = o.y[best] + best_eta * (o.y[best + 1] - o.y[best]);
     // The particle's row: the arc length of its closest point below the top corners (0 on the top).
     const double tx = o.x[best + 1] - o.x[best], ty = o.y[best + 1] - o.y[best],
                  l = std::sqrt(tx * tx + ty * ty);
-    // The wall normal at the particle: from its closest point to it (a face's normal in front of a face,
-    // radial round a corner, so that it turns continuously); on the surface itself, the segment's outward
-    // normal.
+    // The wall normal at the particle: from its closest point to it (a face's normal in front of a face, radial
+    // round a corner, so that it turns continuously); on the surface itself, the segment's outward normal.
     const bool on_surface = best_d <= 1e-9 * dx_;
     const double arc = best < right_end_     ? arc_[best] - best_eta * l
                        : best >= left_start_ ? arc_[best] + best_eta * l
@@ -394,8 +387,8 @@ void PlateWall::momentum(const double* vx, const double* vy, const double* rho, 
     for (int q = start_[a]; q < start_[a + 1]; ++q) {
       const int g = ghost_[q];
       const double ex = ex_[q], ey = ey_[q], f = f_[q];
-      // Adami et al. (2012): pressure continued from the particle with the body force, not clamped at zero
-      // (as the tank walls, docs/sph.md: a clamp tears particles in tension off the wall)
+      // Adami et al. (2012): pressure continued from the particle with the body force, not clamped at zero (as
+      // the tank walls, docs/sph.md: a clamp tears particles in tension off the wall)
       const double psum = pi + pi + rhoi * (k.body_x * ex + k.body_y * ey);
       // eq. 4 pressure term: -(1/rho_i) (p_i + p_g) V_g grad_i W, grad_i W = -F e
       double scalar = psum * gvol_[g] * f * inv_rhoi;
@@ -406,8 +399,8 @@ void PlateWall::momentum(const double* vx, const double* vy, const double* rho, 
     }
     ax[i] += sx;
     ay[i] += sy;
-    // The plate gets the opposite force at the particle's closest point, shared by the segment's two points
-    // as a contact force (eq. 19's (1 - eta), eta).
+    // The plate gets the opposite force at the particle's closest point, shared by the segment's two points as a
+    // contact force (eq. 19's (1 - eta), eta).
     const double fx = -mass[i] * sx, fy = -mass[i] * sy;
     loads_.push_back({gid[i], point_[s], (1.0 - eta) * fx, (1.0 - eta) * fy});
     loads_.push_back({gid[i], point_[s + 1], eta * fx, eta * fy});

@@ -12,9 +12,9 @@ namespace halfeti::sph {
 
 namespace {
 // First-order (MLS) kernel interpolation at a point: with b = (1, x_i - x, y_i - y), solves
-// [sum V W b b^T] c = sum V W b f for f = p, u, v and returns c_0 of each: exact for linear fields even where
-// the kernel is cut by a wall or the surface. Falls back to the Shepard value sum V W f / sum V W when the
-// moment matrix is singular (too few particles). All sums in global-id order.
+// [sum V W b b^T] c = sum V W b f for f = p, u, v and returns c_0 of each: exact for linear fields even where the
+// kernel is cut by a wall or the surface. Falls back to the Shepard value sum V W f / sum V W when the moment
+// matrix is singular (too few particles). All sums in global-id order.
 std::array<double, 3> interpolate(MPI_Comm comm, const Kernel& k, double px, double py, int n,
                                   const std::vector<std::int64_t>& gid, const std::vector<double>& x,
                                   const std::vector<double>& y, const std::vector<double>& vx,
@@ -72,12 +72,11 @@ double Fluid::free_surface_elevation(double px) const {
 
 double Fluid::surface_level(double px) const {
   // The bulk's free surface at x, robust to splashes: the water's kernel-interpolated volume fraction
-  // c(y) = sum V_j W(|(x, y) - r_j|) (the tank's walls and floor as mirrors, so that c = 1 in the bulk next
-  // to them) sampled upward from the floor every dx / 8; the level is the first place it falls below 1/2
-  // (linearly interpolated): a flat surface's, there, is its top particles' centres plus dx / 2, as the
-  // elevation probe's. A jet or spray above the bulk, separated from it by a gap, is not counted. The
-  // particles within one support of the vertical line are gathered on every rank and summed in global-id
-  // order (the same value on any ranks).
+  // c(y) = sum V_j W(|(x, y) - r_j|) (the tank's walls and floor as mirrors, so that c = 1 in the bulk next to them)
+  // sampled upward from the floor every dx / 8; the level is the first place it falls below 1/2 (linearly
+  // interpolated): a flat surface's, there, is its top particles' centres plus dx / 2, as the elevation probe's.
+  // A jet or spray above the bulk, separated from it by a gap, is not counted. The particles within one support of
+  // the vertical line are gathered on every rank and summed in global-id order (the same value on any ranks).
   const double rc = kernel_.support(), L = params_.tank_length;
   std::vector<double> mine;  // gid, x, y, volume
   for (int i = 0; i < n_owned_; ++i)

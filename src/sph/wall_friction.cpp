@@ -14,8 +14,8 @@ double LawOfTheWall::friction_velocity(double u, double y, double nu) const {
   if (u <= 0.0) return 0.0;
   const double laminar = std::sqrt(nu * u / y);  // u+ = y+: u*^2 = nu u / y
   if (y * laminar / nu <= y_plus_c_) return laminar;
-  // Log law: g(s) = s ln(E y s / nu) - kappa u = 0 for s = u*; g is increasing and convex beyond the sublayer
-  // and negative at the laminar value, so Newton from there steps past the root once and then falls onto it.
+  // Log law: g(s) = s ln(E y s / nu) - kappa u = 0 for s = u*; g is increasing and convex beyond the sublayer and
+  // negative at the laminar value, so Newton from there steps past the root once and then falls onto it.
   double s = laminar;
   for (int i = 0; i < 50; ++i) {
     const double l = std::log(E_ * y * s / nu), g = s * l - kappa_ * u, step = g / (l + 1.0);
@@ -29,8 +29,7 @@ void add_wall_friction(const double* x, const double* y, const double* vx, const
                        const TankWalls& tank, double dx, double nu, double* ax, double* ay) {
   static const LawOfTheWall law;  // its crossover is solved once, not every step
   const double y_min = 0.5 * dx, inv_dx = 1.0 / dx;
-  // A wall's shear on particle i: the wall at distance dist, its tangential velocity component ut along (tx,
-  // ty).
+  // A wall's shear on particle i: the wall at distance dist, its tangential velocity component ut along (tx, ty).
   const auto shear = [&](int i, double dist, double tx, double ty) {
     if (dist >= dx) return;
     const double ut = vx[i] * tx + vy[i] * ty, speed = std::abs(ut);

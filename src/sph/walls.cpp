@@ -41,8 +41,8 @@ WallGhosts build_wall_ghosts(const FluidParams& p, double support) {
   WallGhosts g;
   const double dx = p.spacing, db = dx * p.wall_spacing_ratio, L = p.tank_length, H = p.tank_height;
   const int rows = static_cast<int>(std::ceil(support / dx - 0.5)) + 1;
-  // Horizontal walls carry the ghosts past the corners too (they fill the corner quadrants); vertical walls
-  // only along their length, so no quadrant is counted twice.
+  // Horizontal walls carry the ghosts past the corners too (they fill the corner quadrants); vertical walls only
+  // along their length, so no quadrant is counted twice.
   auto line = [&](double xa, double ya, double xb, double yb, bool with_extension, int internal,
                   double side) {
     const double len = std::hypot(xb - xa, yb - ya);

@@ -58,9 +58,9 @@ namespace {
 
 // The node grid both meshes share, nx x ny nodes (row by row from the clamped base), with its clamped base,
 // named nodes, edge sets (edges of `per_edge` nodes: 3 for Q9, 2 for Q4 with the middle -1) and the
-// counterclockwise surface: right face upwards, top leftwards, left face downwards. All in the plate's frame;
-// a hanging plate maps it to the tank by the half turn about the clamp, x -> c - (x - c), which keeps the
-// outline counterclockwise and swaps the names of the sides.
+// counterclockwise surface: right face upwards, top leftwards, left face downwards. All in the plate's frame; a
+// hanging plate maps it to the tank by the half turn about the clamp, x -> c - (x - c), which keeps the outline
+// counterclockwise and swaps the names of the sides.
 void lay_out_grid(const PlateGeometry& geo, int nx, int ny, int per_edge, PlateMesh& mesh) {
   auto id = [nx](int i, int j) { return i + nx * j; };
   mesh.cells_across = geo.cells_across;

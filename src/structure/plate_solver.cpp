@@ -73,8 +73,8 @@ PlateSolver::PlateSolver(MPI_Comm comm, const StructureParameters& params,
     *v = Eigen::VectorXd::Zero(dof_count());
 
   // A direct solve by default (small banded systems); -structure_ksp_type / -structure_pc_type override.
-  // One rank: K_eff is symmetric (hyperelastic tangent, cables, Newmark mass), so PETSc's Cholesky on the
-  // upper triangle (SeqSBAIJ, block size 2) in the natural order, which is banded (nodes numbered across the
+  // One rank: K_eff is symmetric (hyperelastic tangent, cables, Newmark mass), so PETSc's Cholesky on the upper
+  // triangle (SeqSBAIJ, block size 2) in the natural order, which is banded (nodes numbered across the
   // thickness first): half the work of the LU (docs/structure.md, "Cost of one Newton iteration"). Several
   // ranks: LU by MUMPS (PETSc's own factorisations are sequential).
   HALFETI_PETSC_CALL(KSPCreate(comm_.get(), ksp_.out()));
@@ -153,8 +153,8 @@ std::vector<double> PlateSolver::save_state() const {
   const auto n = static_cast<std::size_t>(dof_count());
   std::vector<double> out;
   for (const Eigen::VectorXd* v : {&u_, &v_, &a_}) out.insert(out.end(), v->data(), v->data() + n);
-  // Each element's state (Q4-EAS: its enhanced parameters) lives on the rank that owns it: a sum over ranks
-  // of zeros elsewhere is exact.
+  // Each element's state (Q4-EAS: its enhanced parameters) lives on the rank that owns it: a sum over ranks of
+  // zeros elsewhere is exact.
   std::vector<double> elements = with_family([&](const auto& family) {
     constexpr int k = std::decay_t<decltype(family)>::kStatePerElement;
     std::vector<double> state(static_cast<std::size_t>(family.state_size()), 0.0);
@@ -176,8 +176,8 @@ void PlateSolver::restore_state(const std::vector<double>& state) {
   if (state.size() != 3 * n + element_state)
     HALFETI_USER_ERROR("restart: the plate's state has "
                        << state.size() << " values, this scene's plate needs " << 3 * n + element_state);
-  // The matrix pattern first: its pass evaluates the elements and the nodal elements (a cable's warm start),
-  // which the caller restores after this.
+  // The matrix pattern first: its pass evaluates the elements and the nodal elements (a cable's warm start), which
+  // the caller restores after this.
   prepare_matrix();
   const double* p = state.data();
   for (Eigen::VectorXd* v : {&u_, &v_, &a_}) {
@@ -344,11 +344,11 @@ void PlateSolver::end_step() {
   last_.residual_norm = residual_norm_;
 }
 
-// The plate-alone Newton loop shared by step() and solve_static(). After an increment the convergence test
-// needs the residual only: it is computed without the tangent (a third of the element cost), and the full
-// system is assembled only when another iteration follows. The residual is the same either way (the same
-// element force code), so the iterates are those of assembling the full system every time (the split-API test
-// checks this bit for bit).
+// The plate-alone Newton loop shared by step() and solve_static(). After an increment the convergence test needs
+// the residual only: it is computed without the tangent (a third of the element cost), and the full system is
+// assembled only when another iteration follows. The residual is the same either way (the same element force
+// code), so the iterates are those of assembling the full system every time (the split-API test checks this
+// bit for bit).
 void PlateSolver::newton_loop(const char* what) {
   const int max_iterations = params_.newton.max_iterations;
   assemble_newton_system();
@@ -410,8 +410,8 @@ double PlateSolver::element_energy(int k) const {
 }
 
 double PlateSolver::gravity_potential_energy() const {
-  // The nodal masses are M's row sums (compute_external): for the uniform field g, -u^T M g exactly. Every
-  // node is on this rank (the plate's state is replicated), so no sum over ranks.
+  // The nodal masses are M's row sums (compute_external): for the uniform field g, -u^T M g exactly. Every node is
+  // on this rank (the plate's state is replicated), so no sum over ranks.
   double e = 0.0;
   for (int n = 0; n < node_count(); ++n) e -= mass_row_sum_(n) * params_.gravity.dot(u_.segment<2>(2 * n));
   return e;

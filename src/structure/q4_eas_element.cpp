@@ -10,10 +10,9 @@ namespace {
 
 constexpr double kGauss2 = 0.5773502691896257;  // 1 / sqrt(3)
 constexpr int kMaxLocalIterations = 25;
-// Local Newton stops when the next correction |d alpha|_inf is below kLocalRtol |alpha|_inf + kLocalAtol *
-// size; that last correction is not applied to the stress state but enters the force linearly (f_u + K_ua d
-// alpha), so the force is accurate to O(|d alpha|^2) (quadratic convergence): far below round-off of the
-// stresses.
+// Local Newton stops when the next correction |d alpha|_inf is below kLocalRtol |alpha|_inf + kLocalAtol * size;
+// that last correction is not applied to the stress state but enters the force linearly (f_u + K_ua d alpha),
+// so the force is accurate to O(|d alpha|^2) (quadratic convergence): far below round-off of the stresses.
 constexpr double kLocalRtol = 1e-8;
 constexpr double kLocalAtol = 1e-13;
 
@@ -77,12 +76,12 @@ Q4EasGeometry HyperelasticQ4Eas::reference_geometry(const Q4Coordinates& referen
 template <bool kFull>
 void HyperelasticQ4Eas::evaluate(const Q4EasGeometry& g, const Extended& U, Extended& force,
                                  Tangent12& k) const {
-  // kFull false (the force-only path) fills the alpha rows of the tangent only (the local solve and the
-  // force's condensation need nothing else), each entry computed exactly as in the full path.
+  // kFull false (the force-only path) fills the alpha rows of the tangent only (the local solve and the force's
+  // condensation need nothing else), each entry computed exactly as in the full path.
   force.setZero();
   const double mu = material_.mu(), lambda = material_.lambda();
-  // Closed form: per point, K_00 += (wl + wm) q0 q0^T, K_11 += (wl + wm) q1 q1^T, K_01 += wl q0 q1^T + wm q1
-  // q0^T (entry [b][a] = row a, column b), K_10 = K_01^T.
+  // Closed form: per point, K_00 += (wl + wm) q0 q0^T, K_11 += (wl + wm) q1 q1^T, K_01 += wl q0 q1^T + wm q1 q0^T
+  // (entry [b][a] = row a, column b), K_10 = K_01^T.
   double k00[6][6] = {}, k11[6][6] = {}, k01[6][6] = {};
   if (!closed_form_) k.setZero();
   for (const auto& p : g.points) {
@@ -129,8 +128,8 @@ void HyperelasticQ4Eas::evaluate(const Q4EasGeometry& g, const Extended& U, Exte
             k01[b][a] += l0[a] * q1[b] + m1[a] * q0[b];
           }
       } else {
-        // The alpha rows only: K(4 + m, .) and K(10 + m, .), i.e. k00, k11, k01 at a = 4, 5 and k01 at b = 4,
-        // 5; each entry by the same expression as above (same bits).
+        // The alpha rows only: K(4 + m, .) and K(10 + m, .), i.e. k00, k11, k01 at a = 4, 5 and k01 at b = 4, 5;
+        // each entry by the same expression as above (same bits).
         for (int b = 0; b < 6; ++b)
           for (int a = 4; a < 6; ++a) {
             k00[b][a] += d0[a] * q0[b];

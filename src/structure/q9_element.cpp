@@ -33,8 +33,8 @@ Q9Point reference_point(const Q9Coordinates& reference, double xi, double eta, d
 
 // The sums over the points of the closed-form Neo-Hookean kernel below, as rank-one updates on contiguous
 // 9-vectors (the columns of the column-major blocks); K_00 and K_11 are symmetric, only their lower triangles
-// are read. Compiled twice (AVX2 and baseline, chosen at run time): each entry is summed in the same order in
-// both, without fused multiply-adds (ISO C++ mode), so both give the same bits.
+// are read. Compiled twice (AVX2 and baseline, chosen at run time): each entry is summed in the same order in both,
+// without fused multiply-adds (ISO C++ mode), so both give the same bits.
 __attribute__((target_clones("avx2", "default"))) void rank_one_sums(
     int points, const double* __restrict q0, const double* __restrict q1, const double* __restrict diagonal,
     const double* __restrict cross_lambda, const double* __restrict cross_m,
@@ -162,8 +162,8 @@ void HyperelasticQ9::accumulate(const Q9Point& p, const Q9Coordinates& u, Energy
 // mixed tangent A_iJkL = F_iI F_kK D_IJKL + delta_ik S_JL of W = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2
 // reduces, using F C^-1 F^T = I and F C^-1 = b, to
 //   A_iJkL = lambda b_iJ b_kL + m b_iL b_kJ + mu delta_ik delta_JL,   m = mu - lambda ln J,
-// (the geometric term delta_ik S_JL and the delta_ik C^-1_JL part of D add up to mu delta_ik delta_JL). So at
-// a point of weight w
+// (the geometric term delta_ik S_JL and the delta_ik C^-1_JL part of D add up to mu delta_ik delta_JL). So at a
+// point of weight w
 //   K_ab(i, k) = w (lambda q_ai q_bk + m q_ak q_bi + mu delta_ik dN_a/dX . dN_b/dX).
 // The last term does not depend on u: summed over the 3x3 points once (Q9Geometry::laplacian). The rest are
 // rank-one products of the columns of q: with the points as columns of Q0, Q1 (9 x 13),

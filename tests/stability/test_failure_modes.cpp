@@ -1,6 +1,6 @@
-// Each failure the atlas maps (docs/stability.md) is detected by a named monitor, with its cause, before a
-// NaN reaches an output; warnings are seen as they happen (stderr, log.txt), tallied in summary.json and in
-// the run's status and last line; a failure's checkpoint and summary carry the failed step's time.
+// Each failure the atlas maps (docs/stability.md) is detected by a named monitor, with its cause, before a NaN
+// reaches an output; warnings are seen as they happen (stderr, log.txt), tallied in summary.json and in the run's
+// status and last line; a failure's checkpoint and summary carry the failed step's time.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -76,9 +76,9 @@ TEST(FailureModes, TheHealthTallyOfARestartedRunIsThatOfOneThatNeverStopped) {
 }
 
 TEST(FailureModes, AStepPastTheStabilityLimitStopsAtTheFailedStepWithItsTimeInTheCheckpoint) {
-  // fluid.cfl = 2: twice the explicit step's limit. A particle leaves the tank within a few steps; the run
-  // says so (exit 3, the monitor's message), before a NaN reaches probes.csv, and the checkpoint and
-  // summary.json carry the failed step's time and number, those in the message.
+  // fluid.cfl = 2: twice the explicit step's limit. A particle leaves the tank within a few steps; the run says so
+  // (exit 3, the monitor's message), before a NaN reaches probes.csv, and the checkpoint and summary.json carry the
+  // failed step's time and number, those in the message.
   const std::string out = test::binary_path("stability_cfl");
   ASSERT_EQ(
       test::run_scene(scene("tank_shake"), out, "--set fluid.cfl=2.0 --set output.probe_interval=0.0001"), 3);
@@ -105,9 +105,8 @@ TEST(FailureModes, AStepPastTheStabilityLimitStopsAtTheFailedStepWithItsTimeInTh
 }
 
 TEST(FailureModes, TheTensileInstabilityIsFoundByTheSpacingMonitorWithItsPlace) {
-  // Standard SPH without Monaghan's correction under the paper's pulse: particles clump (docs/stability.md:
-  // from 0.175 s on, to 0.0007 dx); the monitor warns, and summary.json keeps the closest pair (in dx) and
-  // where it was.
+  // Standard SPH without Monaghan's correction under the paper's pulse: particles clump (docs/stability.md: from
+  // 0.175 s on, to 0.0007 dx); the monitor warns, and summary.json keeps the closest pair (in dx) and where it was.
   const std::string out = test::binary_path("stability_tensile");
   ASSERT_EQ(test::run_scene(
                 scene("tank_shake"), out,

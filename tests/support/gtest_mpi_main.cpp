@@ -1,5 +1,5 @@
-// GoogleTest main for halfeti tests: initialises MPI (or PETSc, which initialises MPI), runs every test on
-// every rank, prints only rank 0's report, and fails the whole run if any rank failed.
+// GoogleTest main for halfeti tests: initialises MPI (or PETSc, which initialises MPI), runs every test on every
+// rank, prints only rank 0's report, and fails the whole run if any rank failed.
 #include <gtest/gtest.h>
 #include <mpi.h>
 

@@ -1,17 +1,15 @@
-// Linear potential-flow sloshing of a rectangular tank under a horizontal ground acceleration a_g(t), in the
-// tank's frame (every mass feels -a_g): the reference for the forced-sloshing validation.
+// Linear potential-flow sloshing of a rectangular tank under a horizontal ground acceleration a_g(t), in the tank's
+// frame (every mass feels -a_g): the reference for the forced-sloshing validation.
 //
 // Tank length L, still depth d, xi in [0, L] from the left wall. With phi = sum_n c_n(t) cos(k_n xi)
 // cosh(k_n y) / cosh(k_n d) and eta = sum_n eta_n(t) cos(k_n xi), k_n = n pi / L, the linearised free-surface
 // conditions d(eta)/dt = d(phi)/dy and d(phi)/dt + g eta + a_g (xi - L/2) = 0 give, mode by mode,
-//   eta_n'' + w_n^2 eta_n = G_n a_g(t),  w_n^2 = g k_n tanh(k_n d),  G_n = (w_n^2 / g) * 4 / (L k_n^2)  (n
-//   odd),
-// and nothing for even n (xi - L/2 = sum_n -4 / (L k_n^2) cos(k_n xi) over odd n). A steady a_g tilts the
-// surface to eta(0) = a_g L / (2 g): the left wall rises when the tank accelerates to +x.
+//   eta_n'' + w_n^2 eta_n = G_n a_g(t),  w_n^2 = g k_n tanh(k_n d),  G_n = (w_n^2 / g) * 4 / (L k_n^2)  (n odd),
+// and nothing for even n (xi - L/2 = sum_n -4 / (L k_n^2) cos(k_n xi) over odd n). A steady a_g tilts the surface
+// to eta(0) = a_g L / (2 g): the left wall rises when the tank accelerates to +x.
 //
 // For the one-cycle cosine pulse a_g = A cos(W t) on [0, T], W = 2 pi / T, from rest:
-//   eta_n = G_n A (cos W t - cos w_n t) / (w_n^2 - W^2) for t <= T, then free oscillation from its state at
-//   T.
+//   eta_n = G_n A (cos W t - cos w_n t) / (w_n^2 - W^2) for t <= T, then free oscillation from its state at T.
 #pragma once
 
 #include <cmath>
@@ -30,8 +28,7 @@ struct LinearSloshing {
     return {k, w2, w2 / gravity * 4.0 / (length * k * k)};
   }
 
-  // The steady response to a constant a_g: sum_n G_n a_g / w_n^2 cos(k_n xi), which must be a_g (L/2 - xi) /
-  // g.
+  // The steady response to a constant a_g: sum_n G_n a_g / w_n^2 cos(k_n xi), which must be a_g (L/2 - xi) / g.
   double static_elevation(double xi, double a) const {
     double eta = 0.0;
     for (int n = 1; n <= modes; n += 2) {

@@ -1,5 +1,5 @@
-// The paper's tank with its water alone (0.30 m long, 0.40 m tall, 0.10 m of still water), for the water's
-// tests under the tank's motion.
+// The paper's tank with its water alone (0.30 m long, 0.40 m tall, 0.10 m of still water), for the water's tests
+// under the tank's motion.
 #pragma once
 
 #include "halfeti/sph/params.hpp"
@@ -8,8 +8,7 @@ namespace halfeti::test {
 
 inline constexpr double kPaperTankLength = 0.30, kPaperWaterDepth = 0.10;
 
-// Still water at spacing dx; `peak_acceleration` sets the automatic c0 (eq. 10) as a scene's excitation
-// would.
+// Still water at spacing dx; `peak_acceleration` sets the automatic c0 (eq. 10) as a scene's excitation would.
 inline sph::FluidParams paper_tank_water(double dx, double peak_acceleration) {
   sph::FluidParams p;
   p.tank_length = kPaperTankLength;

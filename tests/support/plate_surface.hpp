@@ -1,5 +1,5 @@
-// Checks shared by the plate-mesh tests: the surface (the contact outline) is one chain of segments, and the
-// area it encloses with the clamped edge (last point back to the first) is the plate's, positive when it runs
+// Checks shared by the plate-mesh tests: the surface (the contact outline) is one chain of segments, and the area
+// it encloses with the clamped edge (last point back to the first) is the plate's, positive when it runs
 // counterclockwise.
 #pragma once
 

@@ -1,9 +1,8 @@
-// inputs/validation/antoci_gate.yaml through the program: the Antoci et al. (2007) rubber gate, clamped at
-// its top, pushed open by a 0.14 m water column. Its free end's x and y displacement are compared with the
-// experiment (inputs/validation/data/antoci_gate_exp_{x,y}.csv, relative to their first values, as digitised)
-// at the measured times: the RMS error over the measured points, against a tolerance of the measured peak x
-// (46.3 mm). ANTOCI_GATE_FULL selects the scene's own dx (1 mm); otherwise dx 2 mm. docs/coupling.md,
-// section 14.
+// inputs/validation/antoci_gate.yaml through the program: the Antoci et al. (2007) rubber gate, clamped at its top,
+// pushed open by a 0.14 m water column. Its free end's x and y displacement are compared with the experiment
+// (inputs/validation/data/antoci_gate_exp_{x,y}.csv, relative to their first values, as digitised) at the measured
+// times: the RMS error over the measured points, against a tolerance of the measured peak x (46.3 mm).
+// ANTOCI_GATE_FULL selects the scene's own dx (1 mm); otherwise dx 2 mm. docs/coupling.md, section 14.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -61,10 +60,10 @@ TEST(AntociGate, FreeEndFollowsTheExperiment) {
                 resolution, names[c], 1e3 * peak.value, peak.time, 1e3 * rms[c],
                 100.0 * rms[c] / peak_measured);
   }
-  // Issue #6's acceptance, an RMS error of at most 10 % of the measured peak in x and y, is NOT met
-  // (docs/coupling.md, section 14: x 21.0 / 20.3 %, y 12.5 / 12.5 % at dx 2 / 1 mm; the gate opens to 36-40
-  // mm, as the published SPH-FE results, and closes back to 29 mm where the experiment stays at 37-43 mm).
-  // Printed here, asserted as a regression guard a little above the measured errors.
+  // Issue #6's acceptance, an RMS error of at most 10 % of the measured peak in x and y, is NOT met (docs/coupling.md,
+  // section 14: x 21.0 / 20.3 %, y 12.5 / 12.5 % at dx 2 / 1 mm; the gate opens to 36-40 mm, as the published SPH-FE
+  // results, and closes back to 29 mm where the experiment stays at 37-43 mm). Printed here, asserted as a
+  // regression guard a little above the measured errors.
   std::printf("antoci_gate %s: issue #6 acceptance (RMS <= 4.63 mm in x and y): %s\n", resolution,
               rms[0] <= 0.10 * peak_measured && rms[1] <= 0.10 * peak_measured ? "met" : "NOT met");
   EXPECT_LE(rms[0], 0.23 * peak_measured) << "x: regression guard";
@@ -74,7 +73,6 @@ TEST(AntociGate, FreeEndFollowsTheExperiment) {
   const double peak_x = *std::max_element(tip_x.begin(), tip_x.end());
   EXPECT_GT(peak_x, 0.9 * 0.034);
   EXPECT_LT(peak_x, 1.1 * 0.039);
-  // It runs to the end (warnings allowed: the outflow's jet under the gate clumps, docs/stability.md's
-  // monitors).
+  // It runs to the end (warnings allowed: the outflow's jet under the gate clumps, docs/stability.md's monitors).
   EXPECT_NE(test::read_text(out + "/summary.json").find("\"exit_status\": \"ok"), std::string::npos);
 }

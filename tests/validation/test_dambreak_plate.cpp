@@ -1,14 +1,14 @@
-// inputs/validation/dambreak_plate.yaml through the program: a dam break onto an elastic plate clamped at the
-// floor (Walhorn et al. 2005 benchmark; docs/coupling.md, section 15), at dx = L/40 with the trapezoidal
-// rule. References: the published tip histories (PFEM, SPH, partitioned FE, MPS-DEM) as issue #14 summarises
-// them: a first peak of 45-48 mm at 0.22-0.26 s, relaxing to 17-20 mm by 0.45 s. The tolerance on each band
-// is 5 % of the mid peak (2.3 mm) and 20 ms, the spread of the published curves among themselves being of
-// that order. The plate's energy balance closes with the trapezoidal rule: the water's work on the plate
-// (plate-wall load, acoustic added mass and contact) equals the change of its strain, kinetic and
-// gravitational energy: the work is summed as the rule's own discrete identity, so only the Newton tolerance
-// is left; 1 % of the peak strain energy (measured: 0.05 % at L/40 and 0.04 % at L/60). A second run with the
-// former contact (the paper's SSOSD relocation and normal_stop, docs/coupling.md section 15) shows the
-// late-phase check can fail: its plate stays bent above the band.
+// inputs/validation/dambreak_plate.yaml through the program: a dam break onto an elastic plate clamped at the floor
+// (Walhorn et al. 2005 benchmark; docs/coupling.md, section 15), at dx = L/40 with the trapezoidal rule.
+// References: the published tip histories (PFEM, SPH, partitioned FE, MPS-DEM) as issue #14 summarises them: a first
+// peak of 45-48 mm at 0.22-0.26 s, relaxing to 17-20 mm by 0.45 s. The tolerance on each band is 5 % of the mid
+// peak (2.3 mm) and 20 ms, the spread of the published curves among themselves being of that order.
+// The plate's energy balance closes with the trapezoidal rule: the water's work on the plate (plate-wall load,
+// acoustic added mass and contact) equals the change of its strain, kinetic and gravitational energy: the work is
+// summed as the rule's own discrete identity, so only the Newton tolerance is left; 1 % of the peak strain energy
+// (measured: 0.05 % at L/40 and 0.04 % at L/60).
+// A second run with the former contact (the paper's SSOSD relocation and normal_stop, docs/coupling.md section
+// 15) shows the late-phase check can fail: its plate stays bent above the band.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -28,8 +28,7 @@ constexpr double kLateLow = 0.017, kLateHigh = 0.020;  // m, published tip at 0.
 constexpr double kTolerance = 0.05 * 0.0465;           // m, 5 % of the mid peak
 constexpr double kPeakTimeLow = 0.22, kPeakTimeHigh = 0.26, kTimeTolerance = 0.02;  // s
 
-// Runs the scene to 0.46 s with `settings` and checks the tip against the published bands and the energy
-// balance.
+// Runs the scene to 0.46 s with `settings` and checks the tip against the published bands and the energy balance.
 void expect_published_tip_and_closed_balance(const std::string& out, const std::string& settings) {
   const std::string scene = test::source_path("inputs/validation/dambreak_plate.yaml");
   ASSERT_EQ(
@@ -92,8 +91,8 @@ TEST(DambreakPlate, TipFollowsThePublishedResultsAndTheEnergyBalanceCloses) {
   EXPECT_GT(former_late, kLateHigh + kTolerance);
 }
 
-// The same benchmark with the plate-water exchange converged within each step (docs/coupling.md, section 16):
-// no added mass; the energy balance then holds to the Newton tolerance (measured 1.8e-4 J/m, 0.016 %).
+// The same benchmark with the plate-water exchange converged within each step (docs/coupling.md, section 16): no
+// added mass; the energy balance then holds to the Newton tolerance (measured 1.8e-4 J/m, 0.016 %).
 TEST(DambreakPlate, ConvergedExchangeFollowsThePublishedResultsToo) {
   expect_published_tip_and_closed_balance(
       test::binary_path("validation_dambreak_plate_converged"),

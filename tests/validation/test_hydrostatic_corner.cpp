@@ -1,10 +1,9 @@
 // inputs/validation/hydrostatic_corner.yaml through the program: in still water the pressure probes at the
-// floor-wall corners and half a spacing from the floor and the walls read rho g (d - y) within 1 % (issue
-// #20's bar) over 0.25-0.5 s (the start's settling past), as does the middle of the floor at the same
-// heights. The probe is the first-order (MLS) interpolation, exact for the linear hydrostatic field where the
-// kernel is cut by the walls; what is left is the particles' own pressure there. The same at the plate's foot
-// (inputs/validation/still_plate.yaml, its first 0.5 s): where the plate's faces meet the floor, and half a
-// spacing from face and floor.
+// floor-wall corners and half a spacing from the floor and the walls read rho g (d - y) within 1 % (issue #20's bar)
+// over 0.25-0.5 s (the start's settling past), as does the middle of the floor at the same heights. The probe is the
+// first-order (MLS) interpolation, exact for the linear hydrostatic field where the kernel is cut by the walls; what
+// is left is the particles' own pressure there. The same at the plate's foot (inputs/validation/still_plate.yaml, its
+// first 0.5 s): where the plate's faces meet the floor, and half a spacing from face and floor.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,9 +1,8 @@
-// The plate with two pretensioned cables, statically (the cable issue's "plate plus two cables"): the cables
-// start at the paper's 135 kPa, and the tip stiffness with cables matches the hand calculation of
-// docs/plate-cables.md: the top of the plate as a rigid section with lateral displacement d and slope phi,
-// the plate as a beam-column under the cables' vertical pull P (closed-form 2x2 tip stiffness), and each
-// cable's exact 2x2 tangent acting at its corner, which moves by (d, +-phi t/2), plus the turning of the
-// cables' present forces with the section.
+// The plate with two pretensioned cables, statically (the cable issue's "plate plus two cables"): the cables start
+// at the paper's 135 kPa, and the tip stiffness with cables matches the hand calculation of docs/plate-cables.md:
+// the top of the plate as a rigid section with lateral displacement d and slope phi, the plate as a beam-column
+// under the cables' vertical pull P (closed-form 2x2 tip stiffness), and each cable's exact 2x2 tangent acting at
+// its corner, which moves by (d, +-phi t/2), plus the turning of the cables' present forces with the section.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,9 +16,9 @@ using namespace halfeti;
 
 namespace {
 
-// Tip stiffness of a cantilever beam-column (length L, bending stiffness EI, compressive end load P) relating
-// the tip's lateral displacement d and slope phi to the tip force F and moment M. Solves EI w'' = F (L - y) +
-// P (d - w) + M with w(0) = w'(0) = 0 (docs/plate-cables.md); P -> 0 gives EI/L^3 [12 -6L; -6L 4L^2].
+// Tip stiffness of a cantilever beam-column (length L, bending stiffness EI, compressive end load P) relating the
+// tip's lateral displacement d and slope phi to the tip force F and moment M. Solves
+// EI w'' = F (L - y) + P (d - w) + M with w(0) = w'(0) = 0 (docs/plate-cables.md); P -> 0 gives EI/L^3 [12 -6L; -6L 4L^2].
 Eigen::Matrix2d beam_column_tip_stiffness(double length, double ei, double p) {
   const double lam = std::sqrt(p / ei), c = std::cos(lam * length), s = std::sin(lam * length);
   Eigen::Matrix2d flexibility;
@@ -33,8 +32,8 @@ Eigen::Matrix2d beam_column_tip_stiffness(double length, double ei, double p) {
   return flexibility.inverse();
 }
 
-// The paper's set-up: tank 0.30 m, plate 8 cm x 0.3 cm mid-tank, cables 2 mm x 2 mm, E = 1.14 MPa, three
-// across the 0.15 m width, anchored 1 cm above the floor, 135 kPa at the plate.
+// The paper's set-up: tank 0.30 m, plate 8 cm x 0.3 cm mid-tank, cables 2 mm x 2 mm, E = 1.14 MPa, three across
+// the 0.15 m width, anchored 1 cm above the floor, 135 kPa at the plate.
 struct PaperPlate {
   structure::StructureParameters params;
   cable::CableSet set;
@@ -77,8 +76,7 @@ TEST(PlateCables, PretensionAndTipStiffnessMatchTheHandCalculation) {
   for (const auto& c : held.cables)
     EXPECT_NEAR(cable::tension_stress(held.set, c->last_solution().tension_end), 135e3, 0.005 * 135e3);
   EXPECT_NEAR(x0, 0.0, 1e-9);  // symmetric: no sway
-  // Cables in the tip's coordinates (d, phi): the left corner moves by (d, +phi t/2), the right by (d, -phi
-  // t/2).
+  // Cables in the tip's coordinates (d, phi): the left corner moves by (d, +phi t/2), the right by (d, -phi t/2).
   double pull_down = 0.0;
   Eigen::Matrix2d k_cables = Eigen::Matrix2d::Zero();
   const double half = 0.5 * 0.003;
@@ -98,9 +96,8 @@ TEST(PlateCables, PretensionAndTipStiffnessMatchTheHandCalculation) {
 
   const double e_prime = 10e6 / (1.0 - 0.45 * 0.45), inertia = std::pow(0.003, 3) / 12.0, length = 0.08;
   const double k_beam = 3.0 * e_prime * inertia / std::pow(length, 3);
-  // The beam-column takes the bending stiffness the plate shows alone (k_alone L^3 / 3), so that what is
-  // compared is the coupling of plate and cables, not beam theory against the 2D continuum (checked just
-  // above).
+  // The beam-column takes the bending stiffness the plate shows alone (k_alone L^3 / 3), so that what is compared
+  // is the coupling of plate and cables, not beam theory against the 2D continuum (checked just above).
   const double ei_plate = k_alone * std::pow(length, 3) / 3.0;
   const Eigen::Matrix2d k_plate = beam_column_tip_stiffness(length, ei_plate, pull_down);
   const Eigen::Matrix2d k_tip = k_plate + k_cables;
@@ -115,9 +112,9 @@ TEST(PlateCables, PretensionAndTipStiffnessMatchTheHandCalculation) {
       k_alone, k_beam, k_held, k_hand, pull_down, k_plate_p, k_cables(0, 0), k_held / k_alone);
   // Beam theory against the Q9 plate: 1% (the structure's own validation holds it to that).
   EXPECT_NEAR(k_alone / k_beam, 1.0, 0.01);
-  // With cables: the cables carry ~95% of the stiffness and their tangent is exact; what remains is the
-  // rigid-top idealisation of the 3 mm section (measured 0.04%): 0.5% leaves room for mesh changes, not for a
-  // missing term (the largest term one could forget, the turning of the pretension with the section, is 1%).
+  // With cables: the cables carry ~95% of the stiffness and their tangent is exact; what remains is the rigid-top
+  // idealisation of the 3 mm section (measured 0.04%): 0.5% leaves room for mesh changes, not for a missing term
+  // (the largest term one could forget, the turning of the pretension with the section, is 1%).
   EXPECT_NEAR(k_held / k_hand, 1.0, 0.005);
   EXPECT_GT(pull_down, 0.0);
 }

@@ -1,5 +1,5 @@
-// inputs/validation/plate_cables.yaml through the program: the scene starts at the paper's 135 kPa in both
-// cables, symmetric, and the pulse then loads one cable and unloads the other.
+// inputs/validation/plate_cables.yaml through the program: the scene starts at the paper's 135 kPa in both cables,
+// symmetric, and the pulse then loads one cable and unloads the other.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,8 +17,7 @@ TEST(PlateCablesScene, StartsAt135kPaAndThePulseLoadsOneCable) {
       << test::read_text(out + ".stderr");
   const auto probes = io::read_probe_csv(out + "/probes.csv");
   const auto left = probes.column("left_stress"), right = probes.column("right_stress");
-  // The static start keeps 135 kPa within the plate's axial give (0.1%, docs/plate-cables.md), both sides
-  // alike.
+  // The static start keeps 135 kPa within the plate's axial give (0.1%, docs/plate-cables.md), both sides alike.
   EXPECT_NEAR(left[0], 135e3, 0.005 * 135e3);
   EXPECT_DOUBLE_EQ(left[0], right[0]);
   // The cosine pulse pushes the tank to +x: in its frame the plate leans to -x, the right cable tightens.
@@ -30,8 +29,8 @@ TEST(PlateCablesScene, StartsAt135kPaAndThePulseLoadsOneCable) {
 }
 
 TEST(PlateCablesScene, ANewtonFailureStopsEveryRankWithACheckpoint) {
-  // One Newton iteration cannot reach the pretensioned equilibrium: the run must stop on both ranks (no
-  // hang), with exit status 3, one line on stderr, a checkpoint and summary.json saying so.
+  // One Newton iteration cannot reach the pretensioned equilibrium: the run must stop on both ranks (no hang),
+  // with exit status 3, one line on stderr, a checkpoint and summary.json saying so.
   const std::string out = test::binary_path("validation_plate_cables_failure");
   const int status = test::run_scene(test::source_path("inputs/validation/plate_cables.yaml"), out,
                                      "--set structure.newton_max_iterations=1 --set scene.end_time=0.05", 2);

@@ -1,13 +1,13 @@
 // inputs/validation/pulse_plate.yaml through the program: the plate and cables under the first 0.12 s of the
-// paper's cosine pulse at dx 3 mm stay stable (docs/coupling.md, section 13). The pressure 4 mm beside the
-// plate may move by what the pulse drives, of order rho a_max L / 2 = 1000 x 3.13 x 0.15 / 2 = 235 Pa plus
-// the sloshing's rho g (level change): the test allows 1.5 kPa. With the plate-water exchange fully explicit
-// (coupling.added_mass: none) the same probes burst to 23-70 kPa at 30-60 ms, or the run stops there as a
-// numerical failure (since the contact has no SSOSD layer, docs/coupling.md section 15: at 36 ms a particle
-// is left inside the plate), which the second run checks. The trapezoidal rule (Newmark 0.5 / 0.25, no
-// damping) with the explicit exchange and its acoustic added mass bursts the same probes to 2.4 kPa by 0.12 s
-// (55 kPa at 0.18 s); with the exchange converged within each step (coupling.plate_wall_exchange: implicit,
-// docs/coupling.md section 16) they stay within the same 1.5 kPa.
+// paper's cosine pulse at dx 3 mm stay stable (docs/coupling.md, section 13). The pressure 4 mm beside the plate
+// may move by what the pulse drives, of order rho a_max L / 2 = 1000 x 3.13 x 0.15 / 2 = 235 Pa plus the sloshing's
+// rho g (level change): the test allows 1.5 kPa. With the plate-water exchange fully explicit
+// (coupling.added_mass: none) the same probes burst to 23-70 kPa at 30-60 ms, or the run stops there as a numerical
+// failure (since the contact has no SSOSD layer, docs/coupling.md section 15: at 36 ms a particle is left inside the
+// plate), which the second run checks.
+// The trapezoidal rule (Newmark 0.5 / 0.25, no damping) with the explicit exchange and its acoustic added mass bursts
+// the same probes to 2.4 kPa by 0.12 s (55 kPa at 0.18 s); with the exchange converged within each step
+// (coupling.plate_wall_exchange: implicit, docs/coupling.md section 16) they stay within the same 1.5 kPa.
 #include <gtest/gtest.h>
 
 #include <algorithm>

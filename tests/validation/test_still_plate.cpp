@@ -1,9 +1,8 @@
 // inputs/validation/still_plate.yaml through the program: still water around the submerged plate stays still.
-// Acceptance (docs/coupling.md, "Still water around the plate"): tip displacement < 0.1 % of the plate's
-// height, no particle inside the plate (the coupling's health check: the run would stop with exit status 3),
-// pressure 2 mm from the plate within a tolerance of rho g (d - y), as a time mean over the second half of
-// the run. STILL_PLATE_FULL selects the full scene (dx 1.5 mm, 2 s; label validation); otherwise a coarse
-// short run.
+// Acceptance (docs/coupling.md, "Still water around the plate"): tip displacement < 0.1 % of the plate's height,
+// no particle inside the plate (the coupling's health check: the run would stop with exit status 3), pressure 2 mm
+// from the plate within a tolerance of rho g (d - y), as a time mean over the second half of the run.
+// STILL_PLATE_FULL selects the full scene (dx 1.5 mm, 2 s; label validation); otherwise a coarse short run.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -30,8 +29,8 @@ TEST(StillPlate, WaterAndPlateStayStill) {
   const double pressure_tolerance = 0.02;
 #else
   const std::string out = test::binary_path("validation_still_plate");
-  // The paper's dx (the water lattice then starts half a spacing from both faces, as the wall ghosts assume;
-  // at dx 2 or 3 mm it starts 0.75 or 1 spacing away and the first row's pressure is 20-100 % off), 30 ms.
+  // The paper's dx (the water lattice then starts half a spacing from both faces, as the wall ghosts assume; at dx
+  // 2 or 3 mm it starts 0.75 or 1 spacing away and the first row's pressure is 20-100 % off), 30 ms.
   const std::string args = "--set scene.end_time=0.03 --set output.field_interval=0";
   const double pressure_tolerance = 0.04;  // the start's acoustic ringing is not yet damped
 #endif

@@ -24,8 +24,8 @@ struct Command {
 // Parses argv (without the program name); throws UserError for a malformed command line.
 Command parse_command_line(const std::vector<std::string>& args);
 
-// "8G", "512MB", "2.5GiB", "3e9": a memory size in bytes (k, M, G, T decimal; Ki, Mi, Gi, Ti binary; an
-// optional trailing B). Throws UserError naming `option` for anything else.
+// "8G", "512MB", "2.5GiB", "3e9": a memory size in bytes (k, M, G, T decimal; Ki, Mi, Gi, Ti binary; an optional
+// trailing B). Throws UserError naming `option` for anything else.
 double parse_memory_size(const std::string& text, const char* option);
 
 std::string usage_text();

@@ -1,5 +1,5 @@
-// The scene's `coupling:` section: how water and plate meet through contact (section 2.3, eqs. 19-24). Used
-// when the scene has both `fluid:` and `structure:`.
+// The scene's `coupling:` section: how water and plate meet through contact (section 2.3, eqs. 19-24). Used when
+// the scene has both `fluid:` and `structure:`.
 #pragma once
 
 #include <memory>

@@ -11,9 +11,9 @@ namespace halfeti::app {
 
 std::shared_ptr<const scene::Schema> fluid_schema();
 
-// Reads the resolved `fluid:` section (with `tank:` and `gravity`) into the fluid's parameters, and checks
-// what depends on several keys (water inside the tank, internal walls inside the tank, ...).
-// `peak_ground_acceleration` feeds the automatic sound speed (eq. 10).
+// Reads the resolved `fluid:` section (with `tank:` and `gravity`) into the fluid's parameters, and checks what
+// depends on several keys (water inside the tank, internal walls inside the tank, ...). `peak_ground_acceleration`
+// feeds the automatic sound speed (eq. 10).
 sph::FluidParams fluid_params(const scene::Node& root, double peak_ground_acceleration);
 
 }  // namespace halfeti::app

@@ -29,8 +29,8 @@ struct Parts {
 
   std::optional<StructureSetup> structure_setup;  // the scene has `structure:`
   std::vector<CableSetup> cable_setups;           // the scene's `cables:`
-  // The structure lives on world rank 0 (its own communicator); other ranks hold nulls and receive what
-  // probes and the coupling need by broadcast.
+  // The structure lives on world rank 0 (its own communicator); other ranks hold nulls and receive what probes
+  // and the coupling need by broadcast.
   Communicator structure_comm;
   std::unique_ptr<structure::PlateSolver> plate;
   std::vector<std::unique_ptr<cable::CableElement>> cables;
@@ -47,8 +47,8 @@ struct Parts {
   int cable_index(const std::string& who, const std::string& name) const;
 };
 
-// Collective: builds the parts whose parameters `parts` holds: the water, the plate and its cables (on the
-// first structure.ranks ranks of `comm`; the others hold nulls), and the coupling between them.
+// Collective: builds the parts whose parameters `parts` holds: the water, the plate and its cables (on the first
+// structure.ranks ranks of `comm`; the others hold nulls), and the coupling between them.
 void build_parts(Parts& parts, MPI_Comm comm, bool trace_coupling);
 void build_structure(Parts& parts, MPI_Comm comm);  // the plate and cables alone (part of build_parts)
 

@@ -1,5 +1,5 @@
-// Probes: named columns of probes.csv. Each probe kind resolves through one registry: its keys (the scene
-// schema of `probes[]` is built from it) and a factory that binds it to the parts of the run.
+// Probes: named columns of probes.csv. Each probe kind resolves through one registry: its keys (the scene schema
+// of `probes[]` is built from it) and a factory that binds it to the parts of the run.
 #pragma once
 
 #include <functional>

@@ -71,8 +71,7 @@ class Simulation {
   void write_tank_outline();
   void trace_coupled_step()
       const;  // --trace coupling: the step's contact and plate-wall forces, the fastest particle
-  // between_steps: false for the checkpoint at a failure inside a step (for inspection; a restart refuses
-  // it).
+  // between_steps: false for the checkpoint at a failure inside a step (for inspection; a restart refuses it).
   void write_checkpoint(const std::string& label, bool between_steps = true);
   void restore(io::Checkpoint checkpoint);
   std::string run_steps(double end,
@@ -108,8 +107,7 @@ class Simulation {
   bool continuing_ = false;   // the restart writes into the folder of the run it continues
   std::string started_utc_;
   double run_start_ = 0.0, earlier_wall_ = 0.0, last_checkpoint_wall_ = 0.0, last_dt_ = 0.0;
-  // The converged exchange (coupling.plate_wall_exchange: implicit): the step's saved start and this run's
-  // counts.
+  // The converged exchange (coupling.plate_wall_exchange: implicit): the step's saved start and this run's counts.
   struct ExchangeCounts {
     long long steps = 0, evaluations = 0, unconverged = 0;
     int most = 0;                 // evaluations of the step that needed most

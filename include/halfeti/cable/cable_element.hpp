@@ -33,8 +33,8 @@ class CableElement : public halfeti::NodalElement {
   // State of the last evaluation (tensions, sag, slack/taut) for probes and health checks.
   const CatenarySolution& last_solution() const { return last_; }
 
-  // A restart's state: the last solution (what probes read, and the next first guess) and the tank frame's
-  // load, as doubles appended to / read from `state` (restore returns the values it used).
+  // A restart's state: the last solution (what probes read, and the next first guess) and the tank frame's load,
+  // as doubles appended to / read from `state` (restore returns the values it used).
   void save_state(std::vector<double>& state) const;
   std::size_t restore_state(const double* state, std::size_t available);
 

@@ -29,8 +29,7 @@ struct PerDepthCable {
 PerDepthCable per_unit_depth(const CableSet& set);
 
 // The tank frame's inertial load on the set per unit depth and unstretched length, -a_g times this mass (the
-// buoyant mass N (rho - rho_fluid) A / B: the water around a cable feels the same frame; its weight stays in
-// w').
+// buoyant mass N (rho - rho_fluid) A / B: the water around a cable feels the same frame; its weight stays in w').
 double tank_frame_load(const CableSet& set, double ground_acceleration);
 
 // The 2D element's properties for a given unstretched length.

@@ -68,9 +68,9 @@ struct CatenarySolution {
 CatenarySolution solve_catenary(const Eigen::Vector2d& end1, const Eigen::Vector2d& end2,
                                 const CableProperties& cable, const Eigen::Vector2d* first_guess = nullptr);
 
-// The shape of a solved cable, for drawing: `segments` + 1 points at equal unstretched arc lengths from end 1
-// to end 2 (eqs. 15-16 in the solver's frame, rotated back) with the tension there (eq. 14). A weightless
-// cable is straight with one tension (none when slack: its shape is then unknown and drawn as the chord).
+// The shape of a solved cable, for drawing: `segments` + 1 points at equal unstretched arc lengths from end 1 to
+// end 2 (eqs. 15-16 in the solver's frame, rotated back) with the tension there (eq. 14). A weightless cable is
+// straight with one tension (none when slack: its shape is then unknown and drawn as the chord).
 struct CurvePoint {
   Eigen::Vector2d position = Eigen::Vector2d::Zero();
   double tension = 0.0;

@@ -1,7 +1,7 @@
 // "Fail on every rank together": work that only some ranks do (rank 0 writing a file, the structure's ranks
-// solving the plate) may raise a user, numerical or I/O error there; the others must not be left waiting in
-// the next collective call. collective_outcome() runs `work` where `participate` is true, then the root
-// shares the outcome: on a failure every rank raises the same error (same kind, same message).
+// solving the plate) may raise a user, numerical or I/O error there; the others must not be left waiting in the
+// next collective call. collective_outcome() runs `work` where `participate` is true, then the root shares the
+// outcome: on a failure every rank raises the same error (same kind, same message).
 #pragma once
 
 #include <mpi.h>
@@ -17,8 +17,8 @@ namespace detail {
 }  // namespace detail
 
 // Collective: among the ranks with has_problem, the message of the one with the smallest `key` (a particle's
-// global id, a rank) on every rank; empty when no rank has one. For checks that any rank may fail (the
-// fluid's monitors, the plate's element loop).
+// global id, a rank) on every rank; empty when no rank has one. For checks that any rank may fail (the fluid's
+// monitors, the plate's element loop).
 std::string first_problem(MPI_Comm comm, bool has_problem, long key, const std::string& message);
 // Collective: the lowest rank among those with `has` and the smallest `key`; -1 when no rank has.
 int first_rank(MPI_Comm comm, bool has, long key);

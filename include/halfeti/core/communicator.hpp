@@ -9,8 +9,7 @@ namespace halfeti {
 class Communicator {
  public:
   Communicator() = default;
-  // Duplicates `parent` (collective over parent). MPI_COMM_NULL stays null (a rank outside a
-  // sub-communicator).
+  // Duplicates `parent` (collective over parent). MPI_COMM_NULL stays null (a rank outside a sub-communicator).
   explicit Communicator(MPI_Comm parent) {
     if (parent != MPI_COMM_NULL) MPI_Comm_dup(parent, &comm_);
   }

@@ -6,8 +6,7 @@
 // and two user-facing raisers that carry the error class the program exits with:
 //   HALFETI_USER_ERROR(msg)         bad input: scene, file, option (exit status 2)
 //   HALFETI_NUMERICAL_ERROR(msg)    a method that failed: blow-up, no convergence (exit status 3)
-//   HALFETI_IO_ERROR(msg)           an output that could not be written: disk full, no permission (exit
-//   status 6)
+//   HALFETI_IO_ERROR(msg)           an output that could not be written: disk full, no permission (exit status 6)
 // `msg` is a stream expression: HALFETI_CHECK(n > 0, "n = " << n << " must be positive").
 #pragma once
 

@@ -1,5 +1,4 @@
-// What a path names on the file system, and its parts: the one home of these small questions for every
-// module.
+// What a path names on the file system, and its parts: the one home of these small questions for every module.
 #pragma once
 
 #include <string>

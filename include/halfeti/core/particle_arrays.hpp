@@ -1,5 +1,5 @@
-// The water's particle state as plain arrays (one entry per particle): what a checkpoint holds and what the
-// fluid is distributed from, at the start and at a restart.
+// The water's particle state as plain arrays (one entry per particle): what a checkpoint holds and what the fluid
+// is distributed from, at the start and at a restart.
 #pragma once
 
 #include <cstdint>

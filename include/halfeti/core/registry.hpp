@@ -1,6 +1,6 @@
-// One registry per kind of named choice (excitation, probe, kernel, material ...): a name maps to the schema
-// of its own keys and to a factory. Adding a choice is one `add` call; the scene schema's choice list and
-// variants are built from the registry, so the two cannot disagree.
+// One registry per kind of named choice (excitation, probe, kernel, material ...): a name maps to the schema of
+// its own keys and to a factory. Adding a choice is one `add` call; the scene schema's choice list and variants
+// are built from the registry, so the two cannot disagree.
 #pragma once
 
 #include <functional>
@@ -65,8 +65,7 @@ class Registry {
   std::map<std::string, Entry> entries_;
 };
 
-// A registry of plain named values (kernel, scheme, material ...): each entry's "factory" is the value
-// itself.
+// A registry of plain named values (kernel, scheme, material ...): each entry's "factory" is the value itself.
 template <class T>
 Registry<T> named_values(std::initializer_list<std::tuple<const char*, const char*, T>> entries) {
   Registry<T> r;

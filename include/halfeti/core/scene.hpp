@@ -1,6 +1,5 @@
-// A resolved scene: the YAML tree after schema checking (every default filled), with typed read access, and
-// the collective loader (rank 0 reads, checks and broadcasts; every rank gets the same scene or the same
-// error).
+// A resolved scene: the YAML tree after schema checking (every default filled), with typed read access, and the
+// collective loader (rank 0 reads, checks and broadcasts; every rank gets the same scene or the same error).
 #pragma once
 
 #include <mpi.h>

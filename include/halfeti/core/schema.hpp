@@ -1,9 +1,8 @@
 // The scene schema: what keys a scene may hold, their types, units, defaults and ranges.
 //
 // Each module declares the keys of its own section with the builder below; the application joins the sections
-// into the scene schema. `resolve()` checks a raw YAML tree against a schema and returns the resolved tree
-// with every default filled in, or throws UserError naming file, line, key, what was found and what was
-// expected.
+// into the scene schema. `resolve()` checks a raw YAML tree against a schema and returns the resolved tree with
+// every default filled in, or throws UserError naming file, line, key, what was found and what was expected.
 #pragma once
 
 #include <yaml-cpp/yaml.h>
@@ -38,8 +37,8 @@ class Key {
 
   Key& required();
   Key& always();  // a section that is resolved from its defaults even when absent
-  // A section resolved from its defaults when absent but every one of `siblings` is present (e.g. the
-  // coupling of water and plate when the scene has both).
+  // A section resolved from its defaults when absent but every one of `siblings` is present (e.g. the coupling
+  // of water and plate when the scene has both).
   Key& implied_by(std::vector<std::string> siblings);
   Key& def(double v);
   Key& def(int v);
@@ -122,8 +121,8 @@ struct Origin {
 // Checks `raw` against `schema` and returns the resolved tree (schema order, defaults filled).
 YAML::Node resolve(const YAML::Node& raw, const Schema& schema, const Origin& origin);
 
-// Applies `--set path=value` to a raw tree (maps are created on the way; list items by index). Throws
-// UserError for a malformed assignment.
+// Applies `--set path=value` to a raw tree (maps are created on the way; list items by index). Throws UserError
+// for a malformed assignment.
 void apply_override(YAML::Node& raw, const std::string& assignment, Origin& origin);
 
 // The closest name to `word` among `candidates` when it is a near miss (edit distance small), else "".

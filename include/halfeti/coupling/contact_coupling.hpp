@@ -35,8 +35,7 @@ namespace halfeti::coupling {
 //   kAcceleration: dv = C dt / m, the constant acceleration Delta C = C / m of eq. 4 held over the step, the
 //                  Newmark (beta 1/2, gamma 1) partner of the 2 / dt^2 mass participation: dv = 2 dx / dt;
 //   kDisplacement: dv = dx / dt, the velocity the fluid's own drift x += dt v would need for the same dx.
-//   kNormalStop:   dv = -min(0, (v - v_s) . n) n: the particle's approach to the surface (velocity v_s of its
-//   contact
+//   kNormalStop:   dv = -min(0, (v - v_s) . n) n: the particle's approach to the surface (velocity v_s of its contact
 //                  point) is stopped and nothing more; the relocation (contact + SSOSD, eqs. 21-22) moves it
 //                  without turning into velocity (docs/coupling.md: dx / dt of an SSOSD shift reached 3 m/s).
 enum class VelocityUpdate { kAcceleration, kDisplacement, kNormalStop };
@@ -44,30 +43,27 @@ enum class VelocityUpdate { kAcceleration, kDisplacement, kNormalStop };
 struct CouplingParameters {
   ContactConstraint constraint = ContactConstraint::kTied;  // scene: coupling.constraint: tied | normal
   VelocityUpdate velocity_update = VelocityUpdate::kAcceleration;  // scene: coupling.velocity_update
-  // Mass participation factor p in p m / dt^2 (scene: coupling.mass_participation): 1 = kick_drift (the
-  // fluid's symplectic-Euler step: an impulse J moves a particle by dt J / m, so dv = C dt / m = dx / dt and
-  // the contact is inelastic), 2 = constant_acceleration (the paper's 2/dt^2: dv = 2 dx / dt, an elastic
-  // bounce).
+  // Mass participation factor p in p m / dt^2 (scene: coupling.mass_participation): 1 = kick_drift (the fluid's
+  // symplectic-Euler step: an impulse J moves a particle by dt J / m, so dv = C dt / m = dx / dt and the contact
+  // is inelastic), 2 = constant_acceleration (the paper's 2/dt^2: dv = 2 dx / dt, an elastic bounce).
   double mass_participation = 1.0;
   ContactSolver solver = ContactSolver::kCondensed;  // scene: coupling.solver: condensed | saddle_point
   bool unilateral = true;  // scene: coupling.unilateral: release invaders the solve would pull (C . n < 0)
-  // scene: coupling.plate_wall: the plate's faces act on the water in the SPH sums (wall ghosts,
-  // docs/coupling.md); false = the paper's form, the water feels the plate through the contact of eq. 21
-  // only.
+  // scene: coupling.plate_wall: the plate's faces act on the water in the SPH sums (wall ghosts, docs/coupling.md);
+  // false = the paper's form, the water feels the plate through the contact of eq. 21 only.
   bool plate_wall = true;
-  // scene: coupling.plate_wall_velocity: the ghosts move with the face (its mean velocity over the last step)
-  // in eqs. 3 and 8; false (default): the faces' ghosts are at rest, the plate pushes the water by their
-  // positions and the contact. The moving-face feedback grew into a plate-water oscillation until the
-  // interface added mass (added_mass_layer, docs/coupling.md section 13); the paper scenes run with true.
+  // scene: coupling.plate_wall_velocity: the ghosts move with the face (its mean velocity over the last step) in
+  // eqs. 3 and 8; false (default): the faces' ghosts are at rest, the plate pushes the water by their positions and
+  // the contact. The moving-face feedback grew into a plate-water oscillation until the interface added mass
+  // (added_mass_layer, docs/coupling.md section 13); the paper scenes run with true.
   bool plate_wall_velocity = false;
   // scene: coupling.plate_wall_exchange (docs/coupling.md, sections 12 and 16):
-  //   kExtrapolated (default): explicit; the plate gets the water's load extrapolated to mid-step, 1.5 F_n -
-  //   0.5
+  //   kExtrapolated (default): explicit; the plate gets the water's load extrapolated to mid-step, 1.5 F_n - 0.5
   //                 F_n-1, and the water the face's velocity extrapolated to mid-step, 2 v_n-1/2 - v_n-3/2;
   //   kLagged:      explicit; F_n and v_n-1/2 as computed;
   //   kImplicit:    converged within the step: the plate is solved under the water's load at the step's end,
-  //                 F_n+1, which the water computes with the plate so moved (its density with the faces'
-  //                 motion over the step), iterated to `implicit.tolerance` by interface quasi-Newton.
+  //                 F_n+1, which the water computes with the plate so moved (its density with the faces' motion over
+  //                 the step), iterated to `implicit.tolerance` by interface quasi-Newton.
   enum class PlateWallExchange { kExtrapolated, kLagged, kImplicit };
   PlateWallExchange plate_wall_exchange = PlateWallExchange::kExtrapolated;
   bool implicit_exchange() const { return plate_wall_exchange == PlateWallExchange::kImplicit; }
@@ -78,13 +74,11 @@ struct CouplingParameters {
         1e-3;  // scene: coupling.implicit.tolerance, ||F_out - F_in|| / ||F_out|| over the surface
     InterfaceQuasiNewtonOptions accelerator;  // scene: coupling.implicit.{acceleration, relaxation}
   } implicit;
-  // scene: coupling.added_mass: the water's mass the plate's faces carry in the plate's step, normal to the
-  // face, on the step's change of velocity (docs/coupling.md, sections 13 and 15):
-  //   kAcoustic: rho0 c0 dt per face area, the water a pressure wave reaches within the step: the face's
-  //   change of
-  //              normal velocity dv meets the water's acoustic impedance, dp = rho0 c0 dv (a piston's
-  //              response in a compressible fluid), within the implicit step instead of one step later
-  //              through the ghosts;
+  // scene: coupling.added_mass: the water's mass the plate's faces carry in the plate's step, normal to the face,
+  // on the step's change of velocity (docs/coupling.md, sections 13 and 15):
+  //   kAcoustic: rho0 c0 dt per face area, the water a pressure wave reaches within the step: the face's change of
+  //              normal velocity dv meets the water's acoustic impedance, dp = rho0 c0 dv (a piston's response in a
+  //              compressible fluid), within the implicit step instead of one step later through the ghosts;
   //   kLayer:    rho0 * added_mass_layer * dx (the former, chosen depth);
   //   kNone:     the plate-water exchange fully explicit.
   enum class AddedMass { kAcoustic, kLayer, kNone };
@@ -133,14 +127,13 @@ struct ExchangeIterate {
       false;  // the step is taken with this iterate (converged, or the best of a stalled iteration)
 };
 
-// The water's force on the plate over the last step, by where and how it acts (docs/coupling.md, section 15):
-// the plate-wall ghosts' load (what the plate is handed at the step's start, before any extrapolation), split
-// into the parts that push into a face and those that pull it outwards (suction: the ghosts continue a
-// particle's pressure, so water in tension beside a face pulls it), and the contact's (eq. 21). Faces by the
-// plate at rest: its top (corners included) and the two sides. The work terms are the water's work on the
-// plate since the start, sum over steps of F . (x_n+1 - x_n) at the surface points: the plate-wall load as
-// applied (extrapolated or not), the interface added mass's spring (section 13) and the contact. Every rank
-// holds the same numbers.
+// The water's force on the plate over the last step, by where and how it acts (docs/coupling.md, section 15): the
+// plate-wall ghosts' load (what the plate is handed at the step's start, before any extrapolation), split into the
+// parts that push into a face and those that pull it outwards (suction: the ghosts continue a particle's pressure,
+// so water in tension beside a face pulls it), and the contact's (eq. 21). Faces by the plate at rest: its top
+// (corners included) and the two sides. The work terms are the water's work on the plate since the start,
+// sum over steps of F . (x_n+1 - x_n) at the surface points: the plate-wall load as applied (extrapolated or not),
+// the interface added mass's spring (section 13) and the contact. Every rank holds the same numbers.
 struct PlateLoadBreakdown {
   enum Face { kRight = 0, kTop = 1, kLeft = 2 };
   double wall_push[3][2] = {}, wall_suction[3][2] = {};               // N/m, [face][x, y]
@@ -148,19 +141,18 @@ struct PlateLoadBreakdown {
   double work_wall = 0.0, work_added_mass = 0.0, work_contact = 0.0;  // J/m since the start
 };
 
-// The water's plate-wall force on one surface point over a step, as a nodal element of the plate: a dead load
-// plus the interface added mass M_a = m_a n n^T (docs/coupling.md, section 13), carried as a spring K = M_a /
-// dt^2 about the place the point would reach at its last step's velocity, x_n + (x_n - x_n-1). The force is
-// then -M_a (x - 2 x_n + x_n-1) / dt^2, minus the added mass times the point's acceleration over the step:
-// smooth motion meets the water's load alone and a sudden change of velocity meets the layer's inertia within
-// the plate's implicit step, not one step later through the water.
+// The water's plate-wall force on one surface point over a step, as a nodal element of the plate: a dead load plus
+// the interface added mass M_a = m_a n n^T (docs/coupling.md, section 13), carried as a spring K = M_a / dt^2 about
+// the place the point would reach at its last step's velocity, x_n + (x_n - x_n-1). The force is then
+// -M_a (x - 2 x_n + x_n-1) / dt^2, minus the added mass times the point's acceleration over the step: smooth motion
+// meets the water's load alone and a sudden change of velocity meets the layer's inertia within the plate's
+// implicit step, not one step later through the water.
 class SurfacePointLoad : public NodalElement {
  public:
   explicit SurfacePointLoad(int node) : node_(node) {}
-  // At the start of a step: the water's load on the point from the step's start (N/m), the point's place
-  // then, its added mass (kg/m, m_a n n^T times its share of the face). The load used, once a previous load
-  // exists: kStart F_n, kMidStep 1.5 F_n - 0.5 F_n-1, kStepEnd 2 F_n - F_n-1 (the converged exchange's first
-  // iterate).
+  // At the start of a step: the water's load on the point from the step's start (N/m), the point's place then, its
+  // added mass (kg/m, m_a n n^T times its share of the face). The load used, once a previous load exists:
+  // kStart F_n, kMidStep 1.5 F_n - 0.5 F_n-1, kStepEnd 2 F_n - F_n-1 (the converged exchange's first iterate).
   enum class Guess { kStart, kMidStep, kStepEnd };
   void start_step(const Eigen::Vector2d& load, const Eigen::Vector2d& place,
                   const Eigen::Matrix2d& added_mass, Guess guess);
@@ -208,17 +200,16 @@ class ContactCoupling {
   std::vector<sph::Barrier> outline() const;
   // The same surface with its points' velocities and accelerations (for Fluid::set_plate_outline).
   sph::PlateOutline plate_outline() const;
-  // Collective. The fluid's plate-wall loads of this rank (Fluid::plate_wall_loads()), applied to the plate
-  // over the next step() of length dt: gathered to the root, summed per surface point in (gid, point) order
+  // Collective. The fluid's plate-wall loads of this rank (Fluid::plate_wall_loads()), applied to the plate over
+  // the next step() of length dt: gathered to the root, summed per surface point in (gid, point) order
   // (rank-independent).
   void set_fluid_loads(const std::vector<sph::PlateWallLoad>& local, double dt);
-  // Collective, with plate_wall_exchange: implicit: the water's plate-wall loads computed after a step() with
-  // the plate as that step left it (F_out). Compares them with the loads the step was solved under (F_in); if
-  // they differ by more than the tolerance, sets the next iterate's loads for a repeat of the step (after the
-  // caller has put the plate, the cables, the water and this object back with restore_state(), which leaves
-  // these loads). An iteration that stalls (3 evaluations without a new best) or reaches max_iterations ends
-  // with its best iterate, evaluated once more if it was not the last; `accepted` says the step is taken as
-  // it stands.
+  // Collective, with plate_wall_exchange: implicit: the water's plate-wall loads computed after a step() with the
+  // plate as that step left it (F_out). Compares them with the loads the step was solved under (F_in); if they
+  // differ by more than the tolerance, sets the next iterate's loads for a repeat of the step (after the caller has
+  // put the plate, the cables, the water and this object back with restore_state(), which leaves these loads).
+  // An iteration that stalls (3 evaluations without a new best) or reaches max_iterations ends with its best
+  // iterate, evaluated once more if it was not the last; `accepted` says the step is taken as it stands.
   ExchangeIterate converge_exchange(const std::vector<sph::PlateWallLoad>& local);
   double fluid_load_x() const { return fluid_load_[0]; }  // N/m, total on the plate, every rank
   double fluid_load_y() const { return fluid_load_[1]; }
@@ -231,21 +222,19 @@ class ContactCoupling {
   const CouplingParameters& parameters() const { return params_; }
 
   // A restart's state: what a step carries to the next (the surface's extrapolated motion, the surface loads'
-  // previous values, the work sums and their last nodal forces). save_state() is rank 0's copy;
-  // restore_state() is collective, after the plate's state is restored (it re-reads the surface from the
-  // plate).
+  // previous values, the work sums and their last nodal forces). save_state() is rank 0's copy; restore_state()
+  // is collective, after the plate's state is restored (it re-reads the surface from the plate).
   std::vector<double> save_state() const;
   void restore_state(const std::vector<double>& state);
 
  private:
   void broadcast_surface();
-  // Root: the loads of every rank's particles summed per surface point in (gid, point) order; with
-  // `breakdown`, the push / suction split of each face into breakdown_.
+  // Root: the loads of every rank's particles summed per surface point in (gid, point) order; with `breakdown`, the
+  // push / suction split of each face into breakdown_.
   std::vector<Eigen::Vector2d> gather_point_loads(const std::vector<sph::PlateWallLoad>& local,
                                                   bool breakdown);
   std::vector<Eigen::Vector2d> surface_normals() const;  // outward, per surface point
-  // The face (PlateLoadBreakdown::Face) of surface point k and of segment s = (k, k + 1), from the corners at
-  // rest.
+  // The face (PlateLoadBreakdown::Face) of surface point k and of segment s = (k, k + 1), from the corners at rest.
   int point_face(int k) const {
     return k < corners_[0] ? first_face_ : k > corners_[1] ? second_face_ : PlateLoadBreakdown::kTop;
   }
@@ -261,13 +250,12 @@ class ContactCoupling {
   std::vector<std::unique_ptr<SurfacePointLoad>>
       loads_;  // root: one per surface point (clamped ones ignored)
   double fluid_load_[2] = {0.0, 0.0};
-  // The outline's corners at rest (sph::outline_corners) and which tank face its first and second faces are:
-  // the first runs up the tank's right face on a standing plate, down its left face on a hanging one.
+  // The outline's corners at rest (sph::outline_corners) and which tank face its first and second faces are: the
+  // first runs up the tank's right face on a standing plate, down its left face on a hanging one.
   int corners_[2] = {-1, -1};
   int first_face_ = PlateLoadBreakdown::kTop, second_face_ = PlateLoadBreakdown::kTop;
   PlateLoadBreakdown breakdown_;
-  // Root: each part's force (wall, added mass, contact) per plate node at the step's end, and at the last
-  // step's.
+  // Root: each part's force (wall, added mass, contact) per plate node at the step's end, and at the last step's.
   std::vector<Eigen::Vector2d> nodal_force_[3], previous_force_[3];
   std::vector<double> surface_motion_;  // every rank: vx, vy, ax, ay per surface point
   std::vector<double> mean_velocity_;   // every rank: vx, vy per surface point over the last step

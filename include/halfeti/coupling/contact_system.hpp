@@ -53,8 +53,7 @@ class ContactSystem {
  public:
   // solver: the plate, on this rank (the structure's communicator has one rank in this version).
   // participation: the invader's mass participation is participation * m / dt^2 (1: the fluid's kick-drift
-  // step, where an impulse J moves the particle by dt J / m; 2: the paper's constant acceleration over the
-  // step).
+  // step, where an impulse J moves the particle by dt J / m; 2: the paper's constant acceleration over the step).
   ContactSystem(structure::PlateSolver& solver, ContactConstraint form,
                 std::string options_prefix = "structure_contact_",
                 ContactSolver method = ContactSolver::kCondensed, double participation = 1.0);
@@ -62,8 +61,7 @@ class ContactSystem {
   ContactSystem& operator=(const ContactSystem&) = delete;
 
   // Newton on eq. 21 between solver.begin_step()/begin_static() and solver.end_step(). dt sets the mass
-  // participation (participation * m / dt^2). `when` names the time in error messages. NumericalError on
-  // non-convergence.
+  // participation (participation * m / dt^2). `when` names the time in error messages. NumericalError on non-convergence.
   ContactSolveReport solve(const std::vector<ContactInvader>& invaders, double dt, double when);
 
   // After solve(): final invader positions, contact forces on them (N/m), and the contact forces on the

@@ -1,10 +1,9 @@
-// The converged plate-water exchange's accelerator: a fixed point x = H(x) of the interface load (H: the
-// plate solved under load x, then the water's load on the plate so moved), solved by interface quasi-Newton
-// with an inverse Jacobian from least squares (IQN-ILS: Degroote, Bruggeman, Haelterman & Vierendeels 2009,
-// Computers & Structures 87, 793-801), or by constant under-relaxation. Chosen because it needs nothing but
-// H's input and output (the water's solver gives no Jacobian), converges where plain iteration diverges under
-// a strong added-mass effect, and for a linear H of n unknowns ends in at most n + 1 evaluations
-// (docs/coupling.md, section 16).
+// The converged plate-water exchange's accelerator: a fixed point x = H(x) of the interface load (H: the plate
+// solved under load x, then the water's load on the plate so moved), solved by interface quasi-Newton with an
+// inverse Jacobian from least squares (IQN-ILS: Degroote, Bruggeman, Haelterman & Vierendeels 2009, Computers &
+// Structures 87, 793-801), or by constant under-relaxation. Chosen because it needs nothing but H's input and output
+// (the water's solver gives no Jacobian), converges where plain iteration diverges under a strong added-mass effect,
+// and for a linear H of n unknowns ends in at most n + 1 evaluations (docs/coupling.md, section 16).
 //
 //   InterfaceQuasiNewton qn(options);
 //   x = guess; qn.start();

@@ -1,7 +1,7 @@
-// How the water's initial lattice meets the plate (docs/coupling.md, section 12): the water fills its blocks
-// except where the plate stands, as the lattice resolves it. The plate's faces are rounded to the nearest
-// lattice lines (ties outward, at least one column); the plate-wall ghosts stand at those lines, so that the
-// first water row is half a spacing from them.
+// How the water's initial lattice meets the plate (docs/coupling.md, section 12): the water fills its blocks except
+// where the plate stands, as the lattice resolves it. The plate's faces are rounded to the nearest lattice lines
+// (ties outward, at least one column); the plate-wall ghosts stand at those lines, so that the first water row is
+// half a spacing from them.
 #pragma once
 
 #include "halfeti/sph/params.hpp"

@@ -1,8 +1,8 @@
 // Restart files: one HDF5 file per checkpoint with a run's whole state at a step boundary (DESIGN.md,
 // "Contracts"): the water's particles (each rank writes its slab; a reader gets them all, in any rank count's
-// order), the replicated state of the other parts as named blocks of doubles (rank 0's copy), named texts
-// (the resolved scene, the health log) and the clock. Written under a temporary name and renamed when
-// complete, so a checkpoint is whole or absent, even when a rank dies while writing it.
+// order), the replicated state of the other parts as named blocks of doubles (rank 0's copy), named texts (the
+// resolved scene, the health log) and the clock. Written under a temporary name and renamed when complete, so a
+// checkpoint is whole or absent, even when a rank dies while writing it.
 #pragma once
 
 #include <mpi.h>

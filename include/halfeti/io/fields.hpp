@@ -1,7 +1,7 @@
-// Field output: parallel HDF5, one file per output time, each rank writing its slab at an offset from a
-// collective scan, plus one XDMF file per series that ParaView opens as a time series (Cabana's
-// HDF5ParticleOutput idea). The reader opens the same files, so every writer has a round-trip test. Each file
-// is written under a temporary name and renamed when complete, so a file of the series is whole or absent.
+// Field output: parallel HDF5, one file per output time, each rank writing its slab at an offset from a collective
+// scan, plus one XDMF file per series that ParaView opens as a time series (Cabana's HDF5ParticleOutput idea).
+// The reader opens the same files, so every writer has a round-trip test. Each file is written under a temporary
+// name and renamed when complete, so a file of the series is whole or absent.
 #pragma once
 
 #include <mpi.h>
@@ -15,9 +15,9 @@ namespace halfeti::io {
 // Where a field lives: one value per point or one per cell of a mesh series.
 enum class Center { kNode, kCell };
 
-// One field of a frame: a scalar, a vector (three components, z = 0 in the 2-D model, so that ParaView's
-// glyphs and warps take it as it is) or integer ids, with its unit (SI; "-" for a pure number, "" for an id),
-// which goes to the HDF5 dataset's `unit` attribute and to an XDMF Information element.
+// One field of a frame: a scalar, a vector (three components, z = 0 in the 2-D model, so that ParaView's glyphs
+// and warps take it as it is) or integer ids, with its unit (SI; "-" for a pure number, "" for an id), which goes
+// to the HDF5 dataset's `unit` attribute and to an XDMF Information element.
 struct Field {
   std::string name;
   std::string unit;
@@ -67,8 +67,8 @@ class FieldSeries {
   std::string write(double time, std::size_t n_local, const double* x, const double* y,
                     const std::vector<Field>& fields, const CellBlock* cells = nullptr);
 
-  // Collective: continue the series found in dir (a restart into the run's own folder): its files up to
-  // `time` are kept, later ones removed, and the next write follows them.
+  // Collective: continue the series found in dir (a restart into the run's own folder): its files up to `time`
+  // are kept, later ones removed, and the next write follows them.
   void resume(double time);
 
   int frames() const { return static_cast<int>(frames_.size()); }
@@ -107,8 +107,8 @@ struct FieldFrameData {
 };
 FieldFrameData read_field_file(const std::string& path);
 
-// Collective: rank 0 renames `from` to `to` (a file written under a temporary name, now complete); an IoError
-// on every rank if it cannot.
+// Collective: rank 0 renames `from` to `to` (a file written under a temporary name, now complete); an IoError on
+// every rank if it cannot.
 void rename_on_root(MPI_Comm comm, const std::string& from, const std::string& to);
 
 }  // namespace halfeti::io

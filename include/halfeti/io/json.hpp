@@ -1,5 +1,5 @@
-// A small JSON value for summary.json and the cable tool's output: objects keep their insertion order so that
-// the files read top-down the way they were written.
+// A small JSON value for summary.json and the cable tool's output: objects keep their insertion order so that the
+// files read top-down the way they were written.
 #pragma once
 
 #include <map>

@@ -1,6 +1,5 @@
-// probes.csv: a `t` column, then one column per probe, named as in the scene. Rank 0 writes; values are
-// passed in already reduced (probes are collective). Rows are flushed so that a run that stops leaves a
-// readable file.
+// probes.csv: a `t` column, then one column per probe, named as in the scene. Rank 0 writes; values are passed in
+// already reduced (probes are collective). Rows are flushed so that a run that stops leaves a readable file.
 #pragma once
 
 #include <cstdio>
@@ -13,8 +12,8 @@ class ProbeWriter {
  public:
   // Opens `path` and writes the header when `writer` is true (rank 0); other ranks hold a closed writer.
   // `carried_rows` (a restart's rows before the checkpoint, verbatim) follow the header. A failed open raises
-  // IoError naming the file and the system's reason; a failed row is kept in failure() (the writer is one
-  // rank: the run checks it collectively).
+  // IoError naming the file and the system's reason; a failed row is kept in failure() (the writer is one rank:
+  // the run checks it collectively).
   ProbeWriter(const std::string& path, const std::vector<std::string>& names, bool writer,
               const std::vector<std::string>& carried_rows = {});
   static std::string header(const std::vector<std::string>& names);  // "t,name1,name2,..."

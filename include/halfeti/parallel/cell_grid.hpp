@@ -1,7 +1,6 @@
-// A uniform grid of square cells over a rectangle (the tank plus a margin). Cells are the unit of
-// distribution (each cell belongs to one rank) and of the neighbour search (cell size >= kernel support, so a
-// particle's neighbours lie in its own and the 8 surrounding cells). Global cell index = iy * nx + ix:
-// "global cell order".
+// A uniform grid of square cells over a rectangle (the tank plus a margin). Cells are the unit of distribution
+// (each cell belongs to one rank) and of the neighbour search (cell size >= kernel support, so a particle's
+// neighbours lie in its own and the 8 surrounding cells). Global cell index = iy * nx + ix: "global cell order".
 #pragma once
 
 #include <algorithm>

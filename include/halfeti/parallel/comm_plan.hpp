@@ -1,10 +1,10 @@
 // The one communication plan the halo and the migration share: how many items this rank sends to and receives
-// from each rank it talks to, and the exchange itself, by point-to-point messages to those ranks only (no
-// call over the whole communicator, so the cost grows with the neighbours, not with the ranks).
+// from each rank it talks to, and the exchange itself, by point-to-point messages to those ranks only (no call
+// over the whole communicator, so the cost grows with the neighbours, not with the ranks).
 //
 // Items arrive in the receive buffer grouped by source rank in increasing order (this rank's own items, if it
-// keeps any, in its own rank's place): the layout an MPI_Alltoallv would give, so results do not depend on
-// how the messages are timed.
+// keeps any, in its own rank's place): the layout an MPI_Alltoallv would give, so results do not depend on how
+// the messages are timed.
 #pragma once
 
 #include <mpi.h>
@@ -25,15 +25,15 @@ class CommPlan {
  public:
   CommPlan() = default;
 
-  // Collective over `peers` (every rank that lists this one among its peers must be among this rank's):
-  // `peers` are the ranks this one may exchange with (never itself), `send_counts[k]` the items for peers[k],
-  // `keep` the items this rank sends to itself. The counts are swapped with the peers only.
+  // Collective over `peers` (every rank that lists this one among its peers must be among this rank's): `peers`
+  // are the ranks this one may exchange with (never itself), `send_counts[k]` the items for peers[k], `keep` the
+  // items this rank sends to itself. The counts are swapped with the peers only.
   static CommPlan with_peers(MPI_Comm comm, std::vector<int> peers, const std::vector<int>& send_counts,
                              int keep, Traffic* traffic);
-  // Collective over `comm`, but with messages to the destinations only: `send_counts[r]` items for rank r
-  // (the own rank's entry is what it keeps). The sources are found by the non-blocking consensus of Hoefler,
-  // Siebert & Lumsdaine (2010, "Scalable communication protocols for dynamic sparse data exchange", PPoPP):
-  // synchronous sends of the counts, then a non-blocking barrier once they are matched.
+  // Collective over `comm`, but with messages to the destinations only: `send_counts[r]` items for rank r (the own
+  // rank's entry is what it keeps). The sources are found by the non-blocking consensus of Hoefler, Siebert &
+  // Lumsdaine (2010, "Scalable communication protocols for dynamic sparse data exchange", PPoPP): synchronous
+  // sends of the counts, then a non-blocking barrier once they are matched.
   static CommPlan discover(MPI_Comm comm, const std::vector<int>& send_counts, Traffic* traffic);
 
   std::size_t send_total() const {
@@ -62,8 +62,8 @@ class CommPlan {
   Traffic* traffic_ = nullptr;
 };
 
-// The ranks other than `rank` that own a cell among the 8 around a cell `rank` owns: whom its halo talks to.
-// The relation is symmetric, so it serves CommPlan::with_peers.
+// The ranks other than `rank` that own a cell among the 8 around a cell `rank` owns: whom its halo talks to. The
+// relation is symmetric, so it serves CommPlan::with_peers.
 std::vector<int> neighbour_ranks(int nx, int ny, const std::vector<int>& owner, int rank);
 
 }  // namespace halfeti::parallel

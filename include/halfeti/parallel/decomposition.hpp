@@ -10,8 +10,8 @@
 
 namespace halfeti::parallel {
 
-// The share of the whole weight each part should hold: part 0 carries `first_share` times what each other
-// part carries (part 0 is the rank that also solves the structure while the others wait; 1 = equal shares).
+// The share of the whole weight each part should hold: part 0 carries `first_share` times what each other part
+// carries (part 0 is the rank that also solves the structure while the others wait; 1 = equal shares).
 std::vector<double> part_targets(int nparts, double first_share);
 
 // Partitions the cells of `grid` into `nparts` parts, balancing `cell_weights` (e.g. particles per cell) with
@@ -25,8 +25,7 @@ std::vector<int> partition_cells(const CellGrid& grid, const std::vector<long>& 
 std::vector<int> partition_cells_collective(MPI_Comm comm, const CellGrid& grid,
                                             const std::vector<long>& cell_weights, double first_share = 1.0);
 
-// Load imbalance max_r(w_r / target_r) of a given owner map, target_r = total * part_targets(...)[r] (1 =
-// perfect).
+// Load imbalance max_r(w_r / target_r) of a given owner map, target_r = total * part_targets(...)[r] (1 = perfect).
 double imbalance(const std::vector<int>& owner, const std::vector<long>& cell_weights, int nparts,
                  double first_share = 1.0);
 

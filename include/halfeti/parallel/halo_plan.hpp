@@ -1,5 +1,5 @@
-// A halo plan: which owned particles each rank sends to which neighbour ranks as ghosts. It holds ids and
-// ranks only, never fields; build it once per neighbour-list rebuild and reuse it for every field (positions,
+// A halo plan: which owned particles each rank sends to which neighbour ranks as ghosts. It holds ids and ranks
+// only, never fields; build it once per neighbour-list rebuild and reuse it for every field (positions,
 // velocities, densities, then the renormalised density gradient). Its messages go to the neighbour ranks only
 // (CommPlan::with_peers).
 #pragma once
@@ -18,9 +18,9 @@ class HaloPlan {
  public:
   HaloPlan() = default;
   // Collective over the neighbour ranks. `cells[i]` is the cell of owned particle i (sorted by cell or not),
-  // `owner` the cell -> rank map, `peers` its neighbour_ranks() for this rank (kept by the caller while the
-  // map holds). A particle is sent to every other rank that owns one of the 8 cells around its own (its
-  // kernel support may reach there). `traffic`, if given, counts the plan's messages.
+  // `owner` the cell -> rank map, `peers` its neighbour_ranks() for this rank (kept by the caller while the map
+  // holds). A particle is sent to every other rank that owns one of the 8 cells around its own (its kernel
+  // support may reach there). `traffic`, if given, counts the plan's messages.
   HaloPlan(MPI_Comm comm, const CellGrid& grid, const std::vector<int>& owner, const std::vector<int>& cells,
            const std::vector<int>& peers, Traffic* traffic = nullptr);
   // The same, the peers found from the map.

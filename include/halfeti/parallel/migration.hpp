@@ -1,8 +1,8 @@
-// Moving particles to the rank that owns their cell. ParticleMigration is a plan (ids and ranks) built from
-// each particle's destination; apply() moves one field at a time. Particles that stay keep their relative
-// order, arrivals follow in order of source rank, then of their position on the source. Its messages go to
-// the ranks that send or receive particles only (CommPlan::discover), whatever the destinations (a new
-// partition moves particles between ranks that were not neighbours).
+// Moving particles to the rank that owns their cell. ParticleMigration is a plan (ids and ranks) built from each
+// particle's destination; apply() moves one field at a time. Particles that stay keep their relative order,
+// arrivals follow in order of source rank, then of their position on the source. Its messages go to the ranks
+// that send or receive particles only (CommPlan::discover), whatever the destinations (a new partition moves
+// particles between ranks that were not neighbours).
 #pragma once
 
 #include <mpi.h>
@@ -16,8 +16,8 @@ namespace halfeti::parallel {
 
 class ParticleMigration {
  public:
-  // Collective. destination[i] = rank that must own particle i after the move. `traffic`, if given, counts
-  // the plan's messages.
+  // Collective. destination[i] = rank that must own particle i after the move. `traffic`, if given, counts the
+  // plan's messages.
   ParticleMigration(MPI_Comm comm, const std::vector<int>& destination, Traffic* traffic = nullptr);
 
   std::size_t new_count() const { return plan_.recv_total(); }

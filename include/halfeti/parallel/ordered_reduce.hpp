@@ -1,6 +1,6 @@
-// Sums that give the same bits on any number of ranks: contributions tagged with global particle ids are
-// gathered to rank 0, sorted by id, summed in that order and broadcast. Used for probes and global
-// diagnostics (a plain MPI_Allreduce sum depends on how the terms are split over ranks).
+// Sums that give the same bits on any number of ranks: contributions tagged with global particle ids are gathered
+// to rank 0, sorted by id, summed in that order and broadcast. Used for probes and global diagnostics (a plain
+// MPI_Allreduce sum depends on how the terms are split over ranks).
 #pragma once
 
 #include <mpi.h>

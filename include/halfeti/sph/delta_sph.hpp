@@ -1,7 +1,7 @@
-// The delta-SPH right-hand sides (section 2.1): renormalised density gradient (eqs. 6-7), continuity with
-// density diffusion (eqs. 3, 5), momentum with artificial viscosity (eqs. 4, 8), Monaghan's (2000) tensile
-// correction, the wall forces and XSPH (eq. 11). Pure loops over the pair lists; each owned particle's sum is
-// independent of the others and runs in the pair list's canonical order.
+// The delta-SPH right-hand sides (section 2.1): renormalised density gradient (eqs. 6-7), continuity with density
+// diffusion (eqs. 3, 5), momentum with artificial viscosity (eqs. 4, 8), Monaghan's (2000) tensile correction,
+// the wall forces and XSPH (eq. 11). Pure loops over the pair lists; each owned particle's sum is independent
+// of the others and runs in the pair list's canonical order.
 #pragma once
 
 #include <vector>
@@ -44,9 +44,8 @@ struct RateConstants {
 };
 
 // Momentum (eqs. 4, 8 + tensile correction + walls + body force) of the owned particles. grad_rho: the owned
-// particles' renormalised density gradient (eqs. 6-7), from which the wall ghosts' pressure is continued
-// along the wall (FluidParams::wall_ghost_pressure = kTaylor); empty: continued with the body force
-// (kBodyForce).
+// particles' renormalised density gradient (eqs. 6-7), from which the wall ghosts' pressure is continued along
+// the wall (FluidParams::wall_ghost_pressure = kTaylor); empty: continued with the body force (kBodyForce).
 void momentum_rates(const ParticleView& pv, const PairList& pairs, const PairList& wall_pairs,
                     const WallParticles& walls, const PairList& ghost_pairs, const WallGhosts& ghosts,
                     const std::vector<double>& grad_rho, const RateConstants& k, Rates& out);

@@ -1,5 +1,5 @@
-// The water: weakly compressible delta-SPH particles distributed over MPI ranks by cells (DESIGN.md, "One
-// time step", fluid part). One force evaluation per step; leap-frog in its kick-drift form:
+// The water: weakly compressible delta-SPH particles distributed over MPI ranks by cells (DESIGN.md, "One time
+// step", fluid part). One force evaluation per step; leap-frog in its kick-drift form:
 //   compute_forces()   halo, neighbours, density_gradient, forces (and dt)
 //   [caller may set extra_acceleration_x/y(): Delta C of eq. 4, per owned particle]
 //   advance()          integrate, health, rebalance, migrate
@@ -40,21 +40,20 @@ class Fluid {
   void step();
   void compute_forces();
   void advance();  // predict() then finish()
-  // advance() in two halves, for the contact coupling between them (DESIGN.md steps 2 and 6): predict()
-  // kicks, updates the density and drifts (time += dt); finish() checks health, rebalances and migrates.
-  // Between them the owned particles keep their indices, so per-particle corrections can be applied. With
-  // PlateDensity::kDeferred, predict() leaves the density at the step's start and update_density() advances
-  // it with the plate wall's term at the faces' velocities of `motion`: the converged plate-water exchange
-  // knows the plate's motion over the step only after the coupling (docs/coupling.md, section 16). The same
-  // arithmetic as predict() alone when the velocities are the same. Between predict() and
-  // apply_corrections().
+  // advance() in two halves, for the contact coupling between them (DESIGN.md steps 2 and 6): predict() kicks,
+  // updates the density and drifts (time += dt); finish() checks health, rebalances and migrates. Between them
+  // the owned particles keep their indices, so per-particle corrections can be applied.
+  // With PlateDensity::kDeferred, predict() leaves the density at the step's start and update_density() advances it
+  // with the plate wall's term at the faces' velocities of `motion`: the converged plate-water exchange knows the
+  // plate's motion over the step only after the coupling (docs/coupling.md, section 16). The same arithmetic as
+  // predict() alone when the velocities are the same. Between predict() and apply_corrections().
   enum class PlateDensity { kWithStep, kDeferred };
   void predict(PlateDensity plate = PlateDensity::kWithStep);
   void update_density(const PlateOutline& motion);
   void finish();
   bool forces_ready() const { return forces_ready_; }  // compute_forces() done for the present particles
-  // Adds the coupling's corrections (position, velocity, density: eqs. 4, 22, 24) to the owned particles
-  // listed in `touched`; each array holds one entry per owned particle.
+  // Adds the coupling's corrections (position, velocity, density: eqs. 4, 22, 24) to the owned particles listed
+  // in `touched`; each array holds one entry per owned particle.
   void apply_corrections(const std::vector<int>& touched, const double* dx, const double* dy,
                          const double* dvx, const double* dvy, const double* drho);
 
@@ -77,33 +76,30 @@ class Fluid {
   const std::vector<double>& rho() const { return rho_; }
   std::vector<double> pressure() const;                      // owned particles, eq. 9
   const std::vector<double>& mass() const { return mass_; }  // kg/m per unit depth
-  // The renormalised density gradient (eq. 6) of the last compute_forces(), 2 per particle, owned first;
-  // empty for the standard scheme.
+  // The renormalised density gradient (eq. 6) of the last compute_forces(), 2 per particle, owned first; empty
+  // for the standard scheme.
   const std::vector<double>& renormalised_density_gradient() const { return grad_rho_; }
 
-  // Delta C (eq. 4) hook: extra acceleration per owned particle, zeroed by compute_forces() and added by
-  // advance().
+  // Delta C (eq. 4) hook: extra acceleration per owned particle, zeroed by compute_forces() and added by advance().
   std::vector<double>& extra_acceleration_x() { return extra_ax_; }
   std::vector<double>& extra_acceleration_y() { return extra_ay_; }
   // Fluid pairs whose segment crosses one of these lines do not interact (added to the internal walls).
   void set_barriers(const std::vector<Barrier>& extra);
   // The plate's surface as a moving wall in the SPH sums (plate_wall.hpp), from the next compute_forces() on;
-  // an empty outline turns it off. Its mid-line (as the lattice sees the plate) becomes the barrier, in place
-  // of any earlier extra barriers. The loads of the last compute_forces() on the surface points, per
-  // particle.
+  // an empty outline turns it off. Its mid-line (as the lattice sees the plate) becomes the barrier, in place of
+  // any earlier extra barriers. The loads of the last compute_forces() on the surface points, per particle.
   void set_plate_outline(const PlateOutline& outline);
   // How the initial lattice sees the plate's faces (before the first set_plate_outline()).
   void set_plate_offsets(const LatticeOffsets& offsets) { plate_wall_.set_offsets(offsets); }
   const std::vector<PlateWallLoad>& plate_wall_loads() const { return plate_wall_.loads(); }
 
   // Probes: collective, same value on every rank, bitwise independent of the rank count.
-  // Kernel interpolation over fluid particles, first-order corrected (MLS; Shepard where the moments are
-  // singular).
+  // Kernel interpolation over fluid particles, first-order corrected (MLS; Shepard where the moments are singular).
   double pressure_at(double x, double y) const;
   std::array<double, 2> velocity_at(double x, double y) const;
   double free_surface_elevation(double x) const;  // top fluid particle in |x_i - x| <= dx, + dx/2
-  // The bulk's surface at x from the kernel-interpolated volume fraction (1/2 crossing upward from the
-  // floor): robust to run-up jets and spray, which the top particle follows.
+  // The bulk's surface at x from the kernel-interpolated volume fraction (1/2 crossing upward from the floor):
+  // robust to run-up jets and spray, which the top particle follows.
   double surface_level(double x) const;
   double front_position(double y_max) const;  // max x of fluid particles below y_max, + dx/2
   double total_mass() const;
@@ -120,9 +116,9 @@ class Fluid {
 
   // ---- restart ----
   // The whole state at a step boundary: the particles (those this rank owns from state(); every particle for
-  // restore()), the clock, the spilled water and the health log with its active warnings. Everything else a
-  // step reads (neighbours, halo, rates, dt) is rebuilt from these, so a restored fluid steps bit for bit as
-  // the one saved, on any number of ranks.
+  // restore()), the clock, the spilled water and the health log with its active warnings. Everything else a step
+  // reads (neighbours, halo, rates, dt) is rebuilt from these, so a restored fluid steps bit for bit as the one
+  // saved, on any number of ranks.
   struct State {
     ParticleArrays particles;
     double time = 0.0, spilled_mass = 0.0;
@@ -135,9 +131,8 @@ class Fluid {
   bool between_steps() const { return !predicted_; }
 
   // ---- a step taken back (the converged plate-water exchange's iterations) ----
-  // Everything a step changes (particles, their order and owners, neighbours, halo, rates, clock, health
-  // log), copied into a reusable buffer and put back: the step then repeats bit for bit. The timers are not
-  // put back.
+  // Everything a step changes (particles, their order and owners, neighbours, halo, rates, clock, health log),
+  // copied into a reusable buffer and put back: the step then repeats bit for bit. The timers are not put back.
   struct Snapshot;
   void snapshot(Snapshot& into) const;
   void rollback(const Snapshot& from);
@@ -158,8 +153,8 @@ class Fluid {
   void maybe_rebalance();
   void migrate();
   std::vector<long> global_cell_counts() const;
-  // A warning's episode (start, end by hysteresis, worst value and place while it holds); a fatal event,
-  // recorded and raised as NumericalError.
+  // A warning's episode (start, end by hysteresis, worst value and place while it holds); a fatal event, recorded
+  // and raised as NumericalError.
   void warn(const std::string& kind, bool active, bool cleared, const std::string& message,
             double value = 0.0, double x = 0.0, double y = 0.0);
   [[noreturn]] void fatal(const std::string& kind, const std::string& message);

@@ -49,8 +49,7 @@ struct Kernel {
   }
 };
 
-// The kernel with its constants folded, for the neighbour search's hot loop: W(r) and F(r) = W'(r) / r at
-// once.
+// The kernel with its constants folded, for the neighbour search's hot loop: W(r) and F(r) = W'(r) / r at once.
 class KernelEvaluator {
  public:
   explicit KernelEvaluator(const Kernel& k)
@@ -70,8 +69,8 @@ class KernelEvaluator {
     }
   }
 
-  // W and F for n squared distances at once, r = sqrt(r2[m]): the same values as operator() on each, in a
-  // loop the compiler turns into vector instructions (sqrt and division two, four or eight at a time).
+  // W and F for n squared distances at once, r = sqrt(r2[m]): the same values as operator() on each, in a loop
+  // the compiler turns into vector instructions (sqrt and division two, four or eight at a time).
   void batch(const double* r2, int n, double* w, double* f) const {
     if (cubic_) {
       for (int m = 0; m < n; ++m) cubic(std::sqrt(r2[m]) * inv_h_, w[m], f[m]);
@@ -99,10 +98,9 @@ class KernelEvaluator {
   double inv_h_, w0_, f0_;
 };
 
-// First moment of the kernel gradient on a square lattice of spacing dx: sum_j dx^2 x_j^2 |W'(r_j)| / r_j
-// over the lattice points around the origin. It is 1 for the continuous integral; on a lattice it is not
-// quite (1.010 for the cubic spline at h = 1.33 dx), which shows up as a 1% error of the hydrostatic
-// pressure.
+// First moment of the kernel gradient on a square lattice of spacing dx: sum_j dx^2 x_j^2 |W'(r_j)| / r_j over
+// the lattice points around the origin. It is 1 for the continuous integral; on a lattice it is not quite (1.010
+// for the cubic spline at h = 1.33 dx), which shows up as a 1% error of the hydrostatic pressure.
 inline double lattice_gradient_moment(const Kernel& k, double dx) {
   const int n = static_cast<int>(std::ceil(k.support() / dx)) + 1;
   double m = 0.0;

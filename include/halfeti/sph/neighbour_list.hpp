@@ -1,8 +1,8 @@
-// Neighbour pairs of the owned fluid particles, in canonical order (global cell order, then global id) so
-// that every per-particle sum is done in the same order whatever the rank count. Rebuilt every step from the
-// particles binned in the cell grid (owned + ghosts). Each pair stores what the physics needs: the separation
-// r_ji = r_j - r_i, W and F = W'(r)/r, so that grad_i W_ij = -F r_ji (|r_ji|^2 is recomputed from r_ji:
-// cheaper than storing it).
+// Neighbour pairs of the owned fluid particles, in canonical order (global cell order, then global id) so that
+// every per-particle sum is done in the same order whatever the rank count. Rebuilt every step from the particles
+// binned in the cell grid (owned + ghosts). Each pair stores what the physics needs: the separation
+// r_ji = r_j - r_i, W and F = W'(r)/r, so that grad_i W_ij = -F r_ji (|r_ji|^2 is recomputed from r_ji: cheaper
+// than storing it).
 #pragma once
 
 #include <cstdint>
@@ -109,14 +109,15 @@ class NeighbourSearch {
   NeighbourSearch(const parallel::CellGrid& grid, const Kernel& kernel)
       : grid_(grid), kernel_(kernel), eval_(kernel) {}
 
-  // Binds fixed points (set 0: wall particles, set 1: wall ghosts), searched by wall_pairs(); their index
-  // order is canonical. For set 1, `internal[g]` >= 0 names the barrier a ghost stands behind: it is seen
-  // only across that barrier; other fixed points are never seen across a barrier.
+  // Binds fixed points (set 0: wall particles, set 1: wall ghosts), searched by wall_pairs(); their index order
+  // is canonical.
+  // For set 1, `internal[g]` >= 0 names the barrier a ghost stands behind: it is seen only across that barrier;
+  // other fixed points are never seen across a barrier.
   void set_fixed_points(int set, const std::vector<double>& px, const std::vector<double>& py,
                         const std::vector<int>& internal = {});
-  // Barriers are indexed by cell: a pair can only cross a barrier that comes within one support of particle
-  // i, so each cell lists the barriers whose box, grown by the support, overlaps it (the plate's outline
-  // changes every step; indexing it costs far less than testing every pair against every segment).
+  // Barriers are indexed by cell: a pair can only cross a barrier that comes within one support of particle i,
+  // so each cell lists the barriers whose box, grown by the support, overlaps it (the plate's outline changes
+  // every step; indexing it costs far less than testing every pair against every segment).
   void set_barriers(std::vector<Barrier> barriers);
   const std::vector<Barrier>& barriers() const { return barriers_; }
 

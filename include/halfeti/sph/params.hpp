@@ -13,13 +13,13 @@ enum class WallGhostPressure { kTaylor, kBodyForce };
 
 enum class Scheme { kDeltaSph, kStandard };  // standard = no density diffusion (delta term off)
 
-// Shear of the tank's walls on the water beside them: none (free slip, as the paper's walls) or the
-// smooth-wall law of the wall on the first particle layer (wall_friction.hpp).
+// Shear of the tank's walls on the water beside them: none (free slip, as the paper's walls) or the smooth-wall
+// law of the wall on the first particle layer (wall_friction.hpp).
 enum class WallFriction { kNone, kLogLaw };
 
-// A rectangle filled with still water on a square lattice of spacing dx; its top is the free surface used for
-// the hydrostatic initial density. `surface_amplitude` != 0 shapes the top as y1 + A cos(pi (x - x0_tank) /
-// L) (the first sloshing mode of the tank).
+// A rectangle filled with still water on a square lattice of spacing dx; its top is the free surface used for the
+// hydrostatic initial density. `surface_amplitude` != 0 shapes the top as y1 + A cos(pi (x - x0_tank) / L)
+// (the first sloshing mode of the tank).
 struct WaterBlock {
   double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;
   double surface_amplitude = 0.0;
@@ -30,8 +30,8 @@ struct Exclusion {
   double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;
 };
 
-// A rigid internal wall: a line of repulsive particles between two end points that pushes on both sides;
-// fluid pairs across it do not interact. Water-block lattice points closer than dx/2 to it are left out.
+// A rigid internal wall: a line of repulsive particles between two end points that pushes on both sides; fluid
+// pairs across it do not interact. Water-block lattice points closer than dx/2 to it are left out.
 struct InternalWall {
   double xa = 0.0, ya = 0.0, xb = 0.0, yb = 0.0;
 };
@@ -75,9 +75,9 @@ struct FluidParams {
       WallFriction::kNone;              // the walls' shear on the first layer (wall_friction.hpp)
   double kinematic_viscosity = 1.0e-6;  // nu [m^2/s] of the law of the wall (water at 20 C)
   // How the wall ghosts' pressure is continued from the particle that sees them (docs/sph.md "Walls"):
-  // kTaylor: p_g = p_i + rho_i (b.n)(n.r_gi) + (grad p_i.t)(t.r_gi), the wall condition across the wall and
-  // the particle's own pressure gradient (eqs. 6, 9) along it; kBodyForce: p_g = p_i + rho_i b.r_gi (Adami et
-  // al. 2012), which holds up films on vertical walls (kept for comparison).
+  // kTaylor: p_g = p_i + rho_i (b.n)(n.r_gi) + (grad p_i.t)(t.r_gi), the wall condition across the wall and the
+  // particle's own pressure gradient (eqs. 6, 9) along it; kBodyForce: p_g = p_i + rho_i b.r_gi (Adami et al.
+  // 2012), which holds up films on vertical walls (kept for comparison).
   WallGhostPressure wall_ghost_pressure = WallGhostPressure::kTaylor;
 
   // Time step

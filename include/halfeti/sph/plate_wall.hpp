@@ -1,9 +1,9 @@
-// The plate's surface as a moving wall in the SPH sums (docs/coupling.md, "The plate in the SPH sums"): ghost
-// points behind each face of the plate's outline stand for the water the plate and the barrier take out of a
-// particle's kernel support, with the pressure continued from the particle (Adami et al. 2012, as the tank
-// walls) and the velocity mirrored about the moving face (free slip). The force they exert on a particle is
-// handed to the plate as the equal and opposite load on the face's surface points. Pure functions of one
-// particle and the outline, so the result is independent of the rank count.
+// The plate's surface as a moving wall in the SPH sums (docs/coupling.md, "The plate in the SPH sums"): ghost points
+// behind each face of the plate's outline stand for the water the plate and the barrier take out of a particle's
+// kernel support, with the pressure continued from the particle (Adami et al. 2012, as the tank walls) and the
+// velocity mirrored about the moving face (free slip). The force they exert on a particle is handed to the plate
+// as the equal and opposite load on the face's surface points. Pure functions of one particle and the outline, so
+// the result is independent of the rank count.
 #pragma once
 
 #include <array>
@@ -23,8 +23,8 @@ struct PlateOutline {
   std::size_t size() const { return x.size(); }
 };
 
-// The top corners of a plate's outline: the first point, from the start (first) and from the end (second),
-// where the polyline turns by more than 45 degrees; -1 where there is none.
+// The top corners of a plate's outline: the first point, from the start (first) and from the end (second), where
+// the polyline turns by more than 45 degrees; -1 where there is none.
 std::pair<int, int> outline_corners(const PlateOutline& o);
 
 // Load of one particle on one surface point (N/m), from the plate-wall term of the last force computation.
@@ -34,9 +34,8 @@ struct PlateWallLoad {
   double fx, fy;
 };
 
-// How far the water lattice's image of the plate lies outside the plate's true faces (m, outward positive;
-// the simulation computes them from the initial lattice: docs/coupling.md, "The plate as the lattice sees
-// it").
+// How far the water lattice's image of the plate lies outside the plate's true faces (m, outward positive; the
+// simulation computes them from the initial lattice: docs/coupling.md, "The plate as the lattice sees it").
 struct LatticeOffsets {
   double right = 0.0, left = 0.0, top = 0.0;
 };
@@ -46,23 +45,22 @@ struct PlateWallConstants {
   double body_x = 0.0, body_y = 0.0;
 };
 
-// Ghost lattice (docs/coupling.md, section 12): the plate (its outline runs up the right face, across the top
-// and down the left face) is cut into rows one lattice spacing apart, measured down both faces from the top
-// corners. Each row holds body ghosts filling the plate's thickness and band ghosts continuing the water's
-// lattice (m + 1/2) dx beyond each face. A particle uses every body ghost in its support and a band ghost
-// only when the plate hides it (the segment between them crosses the plate's mid-line): the ghosts then stand
-// exactly for the solid and for the water the mid-line barrier takes out of the support, on a face, on the
-// top and round a corner alike. All in the plate's own frame: for a hanging plate (the standing one turned
-// about its clamp, structure.orientation) the outline's "top" is its free end, below, and its first face the
-// tank's left face (docs/coupling.md, section 14).
+// Ghost lattice (docs/coupling.md, section 12): the plate (its outline runs up the right face, across the top and
+// down the left face) is cut into rows one lattice spacing apart, measured down both faces from the top corners. Each
+// row holds body ghosts filling the plate's thickness and band ghosts continuing the water's lattice (m + 1/2) dx
+// beyond each face. A particle uses every body ghost in its support and
+// a band ghost only when the plate hides it (the segment between them crosses the plate's mid-line): the ghosts
+// then stand exactly for the solid and for the water the mid-line barrier takes out of the support, on a face, on
+// the top and round a corner alike.
+// All in the plate's own frame: for a hanging plate (the standing one turned about its clamp, structure.orientation)
+// the outline's "top" is its free end, below, and its first face the tank's left face (docs/coupling.md, section 14).
 class PlateWall {
  public:
   // The offsets apply to every outline set after this call.
   void set_offsets(const LatticeOffsets& offsets) { offsets_ = offsets; }
   void set_outline(const PlateOutline& outline, double dx, double support);
-  // The faces' velocities only (the true outline's points, as set_outline() takes them): the positions,
-  // ghosts and pairs stay. The converged exchange sets the plate's motion over a step after the step's pairs
-  // were found.
+  // The faces' velocities only (the true outline's points, as set_outline() takes them): the positions, ghosts and
+  // pairs stay. The converged exchange sets the plate's motion over a step after the step's pairs were found.
   void set_wall_velocity(const PlateOutline& motion);
   bool empty() const { return outline_.size() < 2; }
   // The mid-line of the plate as the lattice sees it, base to top: the barrier between the two sides.
@@ -71,8 +69,7 @@ class PlateWall {
   const PlateOutline& outline() const { return outline_; }
   // Ghost pairs of the owned particles [0, n) (positions x, y).
   void find_pairs(const double* x, const double* y, int n, const Kernel& kernel);
-  // eq. 4 pressure and viscous terms over the ghosts: adds to ax, ay (per owned particle) and records the
-  // loads.
+  // eq. 4 pressure and viscous terms over the ghosts: adds to ax, ay (per owned particle) and records the loads.
   void momentum(const double* vx, const double* vy, const double* rho, const double* p, const double* mass,
                 const std::int64_t* gid, const PlateWallConstants& k, double* ax, double* ay);
   // eq. 3 first term over the ghosts (velocity mirrored about the wall): adds to drho.
@@ -106,8 +103,8 @@ class PlateWall {
   std::vector<double> run_box_;        // and their boxes (x0, y0, x1, y1)
   std::array<double, 4> box_{};        // the outline's box (x0, y0, x1, y1)
   std::vector<double> arc_;  // per outline point: arc length from its face's top corner (0 on the top)
-  // Ghosts, in rows of one lattice spacing from the top down: position, volume, region, the right face's
-  // segment beside it; row_start_ indexes the rows.
+  // Ghosts, in rows of one lattice spacing from the top down: position, volume, region, the right face's segment
+  // beside it; row_start_ indexes the rows.
   std::vector<double> gx_, gy_, gvol_;
   std::vector<int> gregion_, gfibre_, row_start_;
   // Per particle with ghosts: its index, its pairs [start, start+count), its wall normal, closest segment and

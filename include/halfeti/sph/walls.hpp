@@ -1,6 +1,6 @@
 // Tank walls and rigid internal walls as lines of boundary particles with normals, fixed in the tank's frame
-// (Monaghan & Kos 1999). Each particle carries a quadrature weight (its share of the wall line inside the
-// tank) for the wall-pressure term.
+// (Monaghan & Kos 1999). Each particle carries a quadrature weight (its share of the wall line inside the tank)
+// for the wall-pressure term.
 #pragma once
 
 #include <vector>
@@ -17,11 +17,10 @@ struct WallParticles {
   std::size_t size() const { return x.size(); }
 };
 
-// Virtual points behind the tank walls (a few rows at (m + 1/2) dx behind each wall particle, volume = the
-// wall particle's share times dx) on which the wall's pressure acts: they stand for the fluid the truncated
-// kernel misses: pressure continued hydrostatically (Adami et al. 2012) and velocity mirrored (free slip), so
-// that still water is in equilibrium next to a wall and a particle leaving a wall expands. They carry no
-// state.
+// Virtual points behind the tank walls (a few rows at (m + 1/2) dx behind each wall particle, volume = the wall
+// particle's share times dx) on which the wall's pressure acts: they stand for the fluid the truncated kernel
+// misses: pressure continued hydrostatically (Adami et al. 2012) and velocity mirrored (free slip), so that still
+// water is in equilibrium next to a wall and a particle leaving a wall expands. They carry no state.
 struct WallGhosts {
   std::vector<double> x, y, volume;
   std::vector<double> nx, ny;  // normal of their wall (into the fluid)
@@ -38,9 +37,8 @@ WallGhosts build_wall_ghosts(const FluidParams& p, double support);
 // `extension` past the corners so that the repulsion stays a partition of unity there.
 WallParticles build_walls(const FluidParams& p, double extension);
 
-// Monaghan & Kos (1999) repulsion magnitude per unit mass at normal distance psi and tangential offset xi
-// from a boundary particle of spacing db: A (1 - q) / sqrt(q) * P(xi), q = psi / 2h, P(xi) = (1 + cos(pi xi /
-// db)) / 2.
+// Monaghan & Kos (1999) repulsion magnitude per unit mass at normal distance psi and tangential offset xi from a
+// boundary particle of spacing db: A (1 - q) / sqrt(q) * P(xi), q = psi / 2h, P(xi) = (1 + cos(pi xi / db)) / 2.
 double monaghan_kos_repulsion(double psi, double xi, double db, double two_h, double amplitude);
 
 }  // namespace halfeti::sph

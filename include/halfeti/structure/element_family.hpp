@@ -1,22 +1,20 @@
 // The plate's element families behind one interface, so that the assembly, the energies and the stresses are
 // written once (plate_assembly.cpp, plate_solver.cpp) for Q9 and Q4-EAS alike.
 //
-// A family holds what its elements need for the whole run: the reference geometry and the scalar consistent
-// mass of each element, and the elements' own state (Q4-EAS: the enhanced parameters, Simo & Armero 1992; Q9:
-// none). Each family provides, with its element's fixed-size types (so the arithmetic is that of the
-// element's own code):
+// A family holds what its elements need for the whole run: the reference geometry and the scalar consistent mass of
+// each element, and the elements' own state (Q4-EAS: the enhanced parameters, Simo & Armero 1992; Q9: none). Each
+// family provides, with its element's fixed-size types (so the arithmetic is that of the element's own code):
 //   kNodes, Coordinates, Vector, Matrix, Mass        the element's sizes
 //   nodes(e)                                         its mesh nodes (tensor order)
-//   displacement(e, u)                               its nodal displacements out of the plate's u (2 per
-//   node) evaluate(e, u, with_matrix, with_tangent, f, K)  internal force; with the matrix, the tangent
-//   (component-major,
+//   displacement(e, u)                               its nodal displacements out of the plate's u (2 per node)
+//   evaluate(e, u, with_matrix, with_tangent, f, K)  internal force; with the matrix, the tangent (component-major,
 //                                                    row/column kNodes i + a) or, without the tangent, zero
-//   mass(e)                                          scalar consistent mass (kNodes x kNodes), rho int N_a
-//   N_b dA energy(e, u)                                     strain energy [J/m] cauchy_at_points(e, u) Cauchy
-//   stress (Voigt 11, 22, 12, 33) at the integration points centre(e, position) a point of the element, for
-//   messages apply_increment(e, du_e)                         the element state after a Newton increment
-//   (component-major) reset_state(), state_size(), save_state(e, out), restore_state(e, in)   a restart's
-//   element state
+//   mass(e)                                          scalar consistent mass (kNodes x kNodes), rho int N_a N_b dA
+//   energy(e, u)                                     strain energy [J/m]
+//   cauchy_at_points(e, u)                           Cauchy stress (Voigt 11, 22, 12, 33) at the integration points
+//   centre(e, position)                              a point of the element, for messages
+//   apply_increment(e, du_e)                         the element state after a Newton increment (component-major)
+//   reset_state(), state_size(), save_state(e, out), restore_state(e, in)   a restart's element state
 // Every method throws NumericalError where the element does (an inverted point).
 #pragma once
 
@@ -73,8 +71,8 @@ class Q9Family {
 
 // Four-node quadrilateral with 4 enhanced strain modes condensed per element (q4_eas_element.hpp). Its state:
 // alpha_, the start of every local solve of the enhanced parameters, changed only by apply_increment() to
-// alpha_solved_ + (d alpha / du) du (both from the last evaluation with the matrix), so the iterates do not
-// depend on which evaluations (residual-only or full) came in between.
+// alpha_solved_ + (d alpha / du) du (both from the last evaluation with the matrix), so the iterates do not depend
+// on which evaluations (residual-only or full) came in between.
 class Q4EasFamily {
  public:
   static constexpr int kNodes = kQ4Nodes;

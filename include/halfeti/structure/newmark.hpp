@@ -1,13 +1,12 @@
-// Newmark's family of time integrators (Newmark 1959) for M a + F(u) = R: the plate's time step, in one
-// place.
+// Newmark's family of time integrators (Newmark 1959) for M a + F(u) = R: the plate's time step, in one place.
 //
 //   u_n+1 = u_n + dt v_n + dt^2 ((1/2 - beta) a_n + beta a_n+1)
 //   v_n+1 = v_n + dt ((1 - gamma) a_n + gamma a_n+1)
 //
 // solved for the displacement: a_n+1 is the function acceleration() of the unknown u_n+1, whose derivative
 // mass_coefficient() = 1 / (beta dt^2) multiplies M in the Newton matrix. beta = 1/4, gamma = 1/2 is the
-// trapezoidal rule (energy-conserving for linear systems, second order); gamma > 1/2 damps the high
-// frequencies (first order); unconditional stability needs beta >= (gamma + 1/2)^2 / 4.
+// trapezoidal rule (energy-conserving for linear systems, second order); gamma > 1/2 damps the high frequencies
+// (first order); unconditional stability needs beta >= (gamma + 1/2)^2 / 4.
 #pragma once
 
 #include <Eigen/Dense>
@@ -19,8 +18,7 @@ struct NewmarkParameters {
   double gamma = 0.5;  // [0.5, 1]; > 0.5 adds numerical damping
 };
 
-// UserError naming structure.newmark.* when a parameter is out of range or the pair is only conditionally
-// stable.
+// UserError naming structure.newmark.* when a parameter is out of range or the pair is only conditionally stable.
 void validate(const NewmarkParameters& p);
 
 class Newmark {

@@ -25,9 +25,9 @@ namespace detail {
                                                       __LINE__);                                      \
   } while (0)
 
-// Solves with `ksp` and returns the converged reason; a negative reason is returned, not thrown, so the
-// caller can name the context. ksp_failure() spells a failed reason out, with the preconditioner's own reason
-// when the preconditioner failed.
+// Solves with `ksp` and returns the converged reason; a negative reason is returned, not thrown, so the caller
+// can name the context. ksp_failure() spells a failed reason out, with the preconditioner's own reason when the
+// preconditioner failed.
 KSPConvergedReason solve_with(KSP ksp, Mat matrix, Vec rhs, Vec solution);
 std::string ksp_failure(KSP ksp, KSPConvergedReason reason);
 

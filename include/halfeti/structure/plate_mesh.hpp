@@ -1,9 +1,9 @@
-// Structured mesh of the plate, Q9 (default) or Q4 (the `q4_eas` element): cells across the thickness (x)
-// times cells along the height (y), the clamped end's centre at a given point. A standing plate rises from
-// its clamped base; a hanging one is the standing plate turned by 180 degrees about its clamp (clamped at its
-// top, free end below), so the plate's own frame, node numbering and counterclockwise outline are the same
-// for both. Nodes are numbered across the thickness first, so the stiffness matrix is banded with a
-// half-bandwidth of about 2 (nodes per row + 1) dofs.
+// Structured mesh of the plate, Q9 (default) or Q4 (the `q4_eas` element): cells across the thickness (x) times
+// cells along the height (y), the clamped end's centre at a given point. A standing plate rises from its clamped
+// base; a hanging one is the standing plate turned by 180 degrees about its clamp (clamped at its top, free end
+// below), so the plate's own frame, node numbering and counterclockwise outline are the same for both. Nodes are numbered
+// across the thickness first, so the stiffness matrix is banded with a half-bandwidth of about 2 (nodes per
+// row + 1) dofs.
 #pragma once
 
 #include <Eigen/Dense>
@@ -20,8 +20,8 @@ enum class ElementType { kQ9, kQ4Eas };
 ElementType parse_element_type(const std::string& name);  // "q9", "q4_eas"; UserError otherwise
 std::string to_string(ElementType type);
 
-// Standing: clamped at its base, free end up (the paper's plate). Hanging: clamped at its top, free end down
-// (a gate, e.g. Antoci et al. 2007).
+// Standing: clamped at its base, free end up (the paper's plate). Hanging: clamped at its top, free end down (a
+// gate, e.g. Antoci et al. 2007).
 enum class Orientation { kStanding, kHanging };
 Orientation parse_orientation(const std::string& name);  // "standing", "hanging"; UserError otherwise
 
@@ -51,15 +51,15 @@ struct PlateMesh {
   std::vector<std::array<int, 4>> quads;  // Q4 connectivity, tensor order (see q4_eas_element.hpp); Q4 only
   std::vector<int> clamped_nodes;         // the clamped end, in the plate's frame left to right
   // Names in the tank's frame. Standing: "top_left", "top_centre", "top_right" (free end), "base_left",
-  // "base_centre", "base_right" (clamped). Hanging: "bottom_left", "bottom_centre", "bottom_right" (free
-  // end), "clamp_left", "clamp_centre", "clamp_right".
+  // "base_centre", "base_right" (clamped). Hanging: "bottom_left", "bottom_centre", "bottom_right" (free end),
+  // "clamp_left", "clamp_centre", "clamp_right".
   std::map<std::string, int> named_nodes;
   std::map<std::string, std::vector<QuadraticEdge>>
       edge_sets;  // "left", "right", "top" ("bottom" if hanging)
-  // Outer surface without the clamped end, counterclockwise: from the clamp along the plate's one face,
-  // across the free end, back along the other face (standing: up the right face, right to left across the
-  // top, down the left face; hanging: down the left face, left to right across the bottom, up the right
-  // face). Consecutive segments share a node.
+  // Outer surface without the clamped end, counterclockwise: from the clamp along the plate's one face, across
+  // the free end, back along the other face (standing: up the right face, right to left across the top, down the
+  // left face; hanging: down the left face, left to right across the bottom, up the right face). Consecutive
+  // segments share a node.
   std::vector<SurfaceSegment> surface;
 
   int node(const std::string& name) const;  // UserError naming the known names if absent

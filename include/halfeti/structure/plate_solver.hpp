@@ -18,8 +18,8 @@
 //   }
 //   solver.end_step();
 //
-// step(t, dt) is that loop with the plate alone (its check after an increment assembles the residual only,
-// which gives the same residual bits, so the same iterates).
+// step(t, dt) is that loop with the plate alone (its check after an increment assembles the residual only, which
+// gives the same residual bits, so the same iterates).
 //
 // Ranks: the structure runs on its own communicator. With more than one rank the elements are split by METIS,
 // the matrix is MPIAIJ in PETSc's numbering petsc_dof() (rows by owner rank) and solved with MUMPS; the state
@@ -119,13 +119,12 @@ class PlateSolver {
   void set_state(const Eigen::VectorXd& displacement, const Eigen::VectorXd& velocity,
                  const Eigen::VectorXd& acceleration);
   void initialise_acceleration(double t);  // solves M a0 = R(t) - F(u0)
-  // A restart's whole state, flattened: u, v, a and the Q4-EAS elements' enhanced parameters (the start
-  // values of the next step's local solves). Collective over the structure's ranks (each holds its own
-  // elements' parameters); every rank returns the same vector. restore_state() takes it back on any structure
-  // rank count.
+  // A restart's whole state, flattened: u, v, a and the Q4-EAS elements' enhanced parameters (the start values of
+  // the next step's local solves). Collective over the structure's ranks (each holds its own elements'
+  // parameters); every rank returns the same vector. restore_state() takes it back on any structure rank count.
   std::vector<double> save_state() const;
-  // Restore the nodal elements' own state (cables) after this: it builds the matrix pattern, whose pass
-  // evaluates them.
+  // Restore the nodal elements' own state (cables) after this: it builds the matrix pattern, whose pass evaluates
+  // them.
   void restore_state(const std::vector<double>& state);
   const Eigen::VectorXd& displacement() const { return u_; }
   const Eigen::VectorXd& velocity() const { return v_; }
@@ -137,9 +136,8 @@ class PlateSolver {
 
   // ---- one Newton iteration in public pieces (for the contact coupling, eq. 21) ----
   void begin_step(double t, double dt);  // dynamic: predictor, loads at t + dt
-  // The next begin_step()'s first Newton iterate instead of u_n (once): a repeat of a step from its saved
-  // start (the converged plate-water exchange) starts from the last attempt's displacement. dof_count()
-  // entries.
+  // The next begin_step()'s first Newton iterate instead of u_n (once): a repeat of a step from its saved start (the
+  // converged plate-water exchange) starts from the last attempt's displacement. dof_count() entries.
   void set_next_predictor(const Eigen::VectorXd& u);
   void begin_static(double t);    // no inertia
   void assemble_newton_system();  // into newton_matrix() / newton_residual()
@@ -171,8 +169,8 @@ class PlateSolver {
       const;  // J/m, -sum_n m_n g . u_n: gravity's work undone since the reference
   double element_von_mises(int element) const;  // Pa, mean over the element's 3x3 (Q4: 2x2) points (Cauchy)
   double max_von_mises() const;                 // Pa, max over all points
-  // Collective over the plate's ranks: for every element (on every rank), the mean von Mises stress over its
-  // points [Pa] and its strain energy per reference area, the strain energy density [J/m^3].
+  // Collective over the plate's ranks: for every element (on every rank), the mean von Mises stress over its points
+  // [Pa] and its strain energy per reference area, the strain energy density [J/m^3].
   void element_fields(std::vector<double>& von_mises, std::vector<double>& energy_density) const;
   PhaseTimers& timers() { return timers_; }
   // One line for the run log: mesh, dofs, material, hypothesis, integration, Newmark, ranks, per unit depth.
@@ -185,10 +183,9 @@ class PlateSolver {
   void build_matrix();
   void prepare_matrix();  // builds the pattern and the scatter map when nodal elements changed it
   void build_scatter_map();
-  // Computes residual_ and hands each element's effective matrix (component-major, column-major, 2 n x 2 n
-  // for n nodes per element) to element_sink(e, values) and each nodal element's (dofs, row-major values) to
-  // nodal_sink; shared by both assembly paths. with_matrix false: the residual and its norms only (element
-  // forces without tangents, no sinks called).
+  // Computes residual_ and hands each element's effective matrix (component-major, column-major, 2 n x 2 n for
+  // n nodes per element) to element_sink(e, values) and each nodal element's (dofs, row-major values) to nodal_sink; shared by both assembly paths.
+  // with_matrix false: the residual and its norms only (element forces without tangents, no sinks called).
   template <typename ElementSink, typename NodalSink>
   void compute_newton_terms(ElementSink&& element_sink, NodalSink&& nodal_sink, bool with_matrix = true);
   // The residual of the current iterate and its norms, without the matrix (newton_residual() is not updated):
@@ -245,9 +242,9 @@ class PlateSolver {
   PetscOwner<VecScatter, VecScatterDestroy> to_all_;
   bool matrix_dirty_ = true;
   // (entry of the element's component-major matrix, position in the value array) for every stored entry of
-  // every element, SeqAIJ or SeqSBAIJ (upper triangle), so the owned matrix is filled without PETSc's
-  // per-entry search (which cost ~40% of an iteration); empty for other matrix types. Element e's entries
-  // start at element_scatter_start_[e].
+  // every element, SeqAIJ or SeqSBAIJ (upper triangle), so the owned matrix is filled without PETSc's per-entry
+  // search (which cost ~40% of an iteration); empty for other matrix types. Element e's entries start at
+  // element_scatter_start_[e].
   std::vector<std::pair<int, PetscInt>> element_scatter_;
   std::vector<std::size_t> element_scatter_start_;
   std::vector<PetscInt> clamped_diagonal_;

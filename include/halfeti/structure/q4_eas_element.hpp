@@ -3,28 +3,28 @@
 // enhanced assumed strain").
 //
 // Formulation (Simo & Armero 1992, "Geometrically non-linear enhanced strain mixed methods and the method of
-// incompatible modes", IJNME 33, 1413-1449): the displacement gradient of the bilinear field is enriched by
-// an element-internal field of four parameters alpha,
+// incompatible modes", IJNME 33, 1413-1449): the displacement gradient of the bilinear field is enriched by an
+// element-internal field of four parameters alpha,
 //   F = I + Grad u + H~(alpha),   H~_iJ = (j0 / j(xi)) sum_beta M_i,beta(alpha, xi) (J0^-1)_beta,J,
 //   M = [alpha_x,xi xi   alpha_x,eta eta]
 //       [alpha_y,xi xi   alpha_y,eta eta],
 // J0 = dX/dxi and j0 = det J0 at the element centre, j = det J at the point. These are Wilson's incompatible
-// modes (1 - xi^2, 1 - eta^2 per component) with their Jacobian frozen at the centre and scaled by j0 / j,
-// which makes int H~ dA = 0 exactly under 2x2 Gauss (xi, eta odd): the element passes the patch test. The
-// modes supply the linear-in-xi shear and the Poisson terms that the bilinear field lacks in bending (no
-// shear locking) and relax the volumetric constraint to one per element in effect (no volumetric locking at
-// nu -> 0.5). Because the four modes span every spatial direction (H~ -> R H~ is alpha -> R alpha), F stays
-// objective as written. Pre-multiplying the modes by the centre's F0 (F = I + Grad u + F0 H~(alpha)) spans
-// the same space for any invertible F0 (F0 H~(alpha) = H~(alpha') with alpha' = F0 alpha per mode vector), so
-// after the condensation both give the same force and tangent; only the parametrisation of alpha differs.
+// modes (1 - xi^2, 1 - eta^2 per component) with their Jacobian frozen at the centre and scaled by j0 / j, which
+// makes int H~ dA = 0 exactly under 2x2 Gauss (xi, eta odd): the element passes the patch test. The modes supply
+// the linear-in-xi shear and the Poisson terms that the bilinear field lacks in bending (no shear locking) and
+// relax the volumetric constraint to one per element in effect (no volumetric locking at nu -> 0.5).
+// Because the four modes span every spatial direction (H~ -> R H~ is alpha -> R alpha), F stays objective as
+// written. Pre-multiplying the modes by the centre's F0 (F = I + Grad u + F0 H~(alpha)) spans the same space for
+// any invertible F0 (F0 H~(alpha) = H~(alpha') with alpha' = F0 alpha per mode vector), so after the condensation
+// both give the same force and tangent; only the parametrisation of alpha differs.
 //
 // alpha is condensed per element: the enhanced equilibrium h(u, alpha) = dPi/dalpha = 0 is solved by a local
-// Newton iteration from a start value, and the element returns the condensed force and the consistent
-// condensed tangent
+// Newton iteration from a start value, and the element returns the condensed force and the consistent condensed
+// tangent
 //   K* = K_uu - K_ua K_aa^-1 K_au   (= d f_u(u, alpha(u)) / du),
-// together with d alpha / du = -K_aa^-1 K_au, which the solver uses to update alpha after each Newton
-// increment (the element state; it only seeds the next local solve, so the residual is a function of u alone
-// up to the local tolerance). Quadrature: 2x2 Gauss for everything.
+// together with d alpha / du = -K_aa^-1 K_au, which the solver uses to update alpha after each Newton increment
+// (the element state; it only seeds the next local solve, so the residual is a function of u alone up to the
+// local tolerance). Quadrature: 2x2 Gauss for everything.
 //
 // Local node numbering is tensor order: node a = i + 2 j at (xi, eta) = (2 i - 1, 2 j - 1).
 // alpha order: [x-xi, x-eta, y-xi, y-eta] (component i, mode m at 2 i + m).

@@ -51,8 +51,8 @@ struct Q9Geometry {
 struct Q9Options {
   PlaneHypothesis hypothesis = PlaneHypothesis::kPlaneStrain;
   bool selective_reduced_integration = true;  // applies in plane strain only
-  // Neo-Hookean in plane strain (the default) uses a closed-form kernel (see q9_element.cpp); false forces
-  // the general material path everywhere (tests compare the two).
+  // Neo-Hookean in plane strain (the default) uses a closed-form kernel (see q9_element.cpp); false forces the
+  // general material path everywhere (tests compare the two).
   bool specialised_kernel = true;
 };
 

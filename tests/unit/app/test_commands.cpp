@@ -62,8 +62,7 @@ TEST(Commands, ExitStatuses) {
                                               "/no_such_scene.yaml': no such file or not readable\n");
   EXPECT_EQ(status_of("check " + scene + " --set excitation.period=-1"), 2);
   EXPECT_EQ(status_of("run " + scene + " --out /proc/forbidden/out"), 2);
-  // A folder for a scene, and --set through a value: bad input, one line (once a yaml-cpp exception, status
-  // 4).
+  // A folder for a scene, and --set through a value: bad input, one line (once a yaml-cpp exception, status 4).
   EXPECT_EQ(status_of("run " + kDir), 2);
   EXPECT_EQ(file_text(kDir + "/err.txt"),
             "halfeti: error: scene file '" + kDir + "' is a folder; give the scene's .yaml file\n");
@@ -83,8 +82,7 @@ TEST(Commands, CheckPrintsTheSizeAndRefusesARunTooBigForTheMachine) {
   EXPECT_NE(file_text(kDir + "/out.txt").find("ok; about 13333 particles, 120 plate elements (1210 dofs), "),
             std::string::npos)
       << file_text(kDir + "/out.txt");
-  // dx = 0.1 um: 3e12 particles, about 3e6 GB: refused before anything is allocated (it once died after 29
-  // s).
+  // dx = 0.1 um: 3e12 particles, about 3e6 GB: refused before anything is allocated (it once died after 29 s).
   EXPECT_EQ(status_of("check " + scene + " --set fluid.spacing=1e-7"), 2);
   EXPECT_NE(
       file_text(kDir + "/err.txt").find("fluid.spacing: the run would need about 3000000000000 particles"),
@@ -97,9 +95,8 @@ TEST(Commands, HelpAfterACommandAndSchedulesFinerThanAStepEnd) {
   EXPECT_EQ(status_of("run --help"), 0);
   EXPECT_NE(file_text(kDir + "/out.txt").find("--restart"), std::string::npos);
   EXPECT_EQ(status_of("check --help"), 0);
-  // An end time or an output interval far below the time step (here 1e-300 s) once kept the schedule loop
-  // adding an interval that no longer changed the next time: the run must end (ctest's timeout would catch a
-  // hang).
+  // An end time or an output interval far below the time step (here 1e-300 s) once kept the schedule loop adding
+  // an interval that no longer changed the next time: the run must end (ctest's timeout would catch a hang).
   const std::string scene = write_scene("tiny.yaml", kPulseScene);
   const std::string out = kDir + "/tiny_out";
   EXPECT_EQ(status_of("run " + scene + " --out " + out + " --overwrite --set scene.end_time=1e-300"), 0);

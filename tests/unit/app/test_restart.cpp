@@ -1,9 +1,9 @@
-// Restart from a checkpoint through the program (mpirun, as a user runs it): a run stopped at some step and
-// continued with --restart is bit for bit the run that never stopped, on the same rank count and on another
-// (1 -> 2, 3 -> 1, 4 -> 2), for the water alone and for the coupled paper scene with cables; the stops a
-// cluster job meets (a signal, --max-wall) leave a checkpoint and a summary that say so; a restart that would
-// change the physics, a folder that holds another run, a file that is no checkpoint are one clear error each;
-// a full disk is an I/O error (exit status 6) naming the file and the reason, with no half-written file left.
+// Restart from a checkpoint through the program (mpirun, as a user runs it): a run stopped at some step and continued
+// with --restart is bit for bit the run that never stopped, on the same rank count and on another (1 -> 2, 3 -> 1,
+// 4 -> 2), for the water alone and for the coupled paper scene with cables; the stops a cluster job meets (a
+// signal, --max-wall) leave a checkpoint and a summary that say so; a restart that would change the physics, a
+// folder that holds another run, a file that is no checkpoint are one clear error each; a full disk is an I/O error
+// (exit status 6) naming the file and the reason, with no half-written file left.
 #include <gtest/gtest.h>
 #include <sys/mount.h>
 #include <sys/stat.h>
@@ -25,8 +25,7 @@ struct Case {
   double end, middle;  // s: the run's end, and where the first leg of a restarted run stops
 };
 
-// The water alone: the Martin & Moyce dam break at a / 12.5 (about 300 particles), through the surge's
-// impact.
+// The water alone: the Martin & Moyce dam break at a / 12.5 (about 300 particles), through the surge's impact.
 const Case kWater{
     test::source_path("inputs/validation/dambreak.yaml"),
     "--set fluid.spacing=0.004572 --set output.field_interval=0.05 --set output.checkpoint_keep=0", 0.2, 0.1};
@@ -35,9 +34,8 @@ const Case kCoupled{
     test::source_path("inputs/paper/cosine_cable.yaml"),
     "--set fluid.spacing=0.006 --set output.field_interval=0.05 --set output.checkpoint_keep=0", 0.1, 0.05};
 
-// The same with the plate-water exchange converged within each step and the trapezoidal rule
-// (docs/coupling.md, section 16): a step repeated from its saved start, and the forces of the next step
-// computed at this one's end.
+// The same with the plate-water exchange converged within each step and the trapezoidal rule (docs/coupling.md,
+// section 16): a step repeated from its saved start, and the forces of the next step computed at this one's end.
 const Case kImplicit{kCoupled.scene,
                      kCoupled.args +
                          " --set coupling.plate_wall_exchange=implicit --set coupling.added_mass=none"
@@ -53,8 +51,8 @@ std::string latest(const std::string& run) {
   return all.empty() ? std::string() : all.back();
 }
 
-// Every number of the two checkpoints agrees bit for bit: the particles (matched by global id), the parts'
-// state and the health log; only the wall time spent so far (the run block's last entry) may differ.
+// Every number of the two checkpoints agrees bit for bit: the particles (matched by global id), the parts' state
+// and the health log; only the wall time spent so far (the run block's last entry) may differ.
 void expect_same_state(const std::string& a, const std::string& b) {
   ASSERT_FALSE(a.empty());
   ASSERT_FALSE(b.empty());
@@ -96,8 +94,8 @@ void expect_same_state(const std::string& a, const std::string& b) {
   }
 }
 
-// The reference run (np 2, never stopped), then for each rank pair a first leg to the middle and a second leg
-// from its checkpoint, into another folder, to the end.
+// The reference run (np 2, never stopped), then for each rank pair a first leg to the middle and a second leg from
+// its checkpoint, into another folder, to the end.
 void expect_restarts_bit_for_bit(const Case& c, const std::string& name) {
   const std::string ref = test::binary_path("restart_" + name + "_ref");
   ASSERT_EQ(test::run_scene(c.scene, ref, c.args + end_time(c.end), 2), 0)
@@ -148,8 +146,8 @@ TEST(Restart, ConvergedExchangeContinuesBitForBitOnOtherRankCounts) {
 
 TEST(Restart, MaxWallStopsResumablyAndTheRunContinuesInItsOwnFolder) {
   // --max-wall far below one step's cost stops the run after its first step: exit status 5, a checkpoint, the
-  // summary "stopped". Continued twice in the same folder (the second leg stopped the same way), the run ends
-  // as the one that never stopped: its state, its probes.csv and its field series.
+  // summary "stopped". Continued twice in the same folder (the second leg stopped the same way), the run ends as
+  // the one that never stopped: its state, its probes.csv and its field series.
   const Case& c = kCoupled;
   const std::string ref = test::binary_path("restart_wall_ref"), run = test::binary_path("restart_wall");
   ASSERT_EQ(test::run_scene(c.scene, ref, c.args + end_time(c.end), 2), 0)

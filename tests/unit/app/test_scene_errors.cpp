@@ -1,5 +1,5 @@
-// The table of malformed scenes: each must be answered by `halfeti check` with one line naming file, line,
-// key, what was found and what was expected (exit status 2).
+// The table of malformed scenes: each must be answered by `halfeti check` with one line naming file, line, key,
+// what was found and what was expected (exit status 2).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -255,8 +255,8 @@ TEST(SceneErrors, ChecksAcrossKeysNameTheFileAndKey) {
        "cannot open accelerogram"},
       {"scene: {name: s, end_time: 1}\nexcitation: {kind: record, file: .}\n",
        "is a folder, not a record file"},
-      // A hanging plate (a gate) reaches down from its clamp: below the floor it does not fit; its nodes have
-      // the tank frame's names, so the standing plate's top_right is unknown.
+      // A hanging plate (a gate) reaches down from its clamp: below the floor it does not fit; its nodes have the
+      // tank frame's names, so the standing plate's top_right is unknown.
       {"scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
        "structure: {base: [0.15, 0.05], orientation: hanging, height: 0.08, time_step: 0.001}\n",
        "structure: the plate (base [0.15, 0.05], 0.003 x 0.08 m) does not fit in the tank"},

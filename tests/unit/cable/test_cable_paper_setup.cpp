@@ -43,8 +43,8 @@ TEST(PaperSetup, PerDepthFigures) {
   EXPECT_NE(text.find("w' = 0.11772 N/m^2"), std::string::npos) << text;
 }
 
-// In the tank's frame the ground acceleration acts on the cable's buoyant mass as gravity does: the sideways
-// load is the weight w' times -a_g / g.
+// In the tank's frame the ground acceleration acts on the cable's buoyant mass as gravity does: the sideways load
+// is the weight w' times -a_g / g.
 TEST(PaperSetup, TankFrameLoadIsTheBuoyantWeightTimesMinusAgOverG) {
   const CableSet set = paper_cables();
   for (double ag : {-3.13, 0.0, 2.5})

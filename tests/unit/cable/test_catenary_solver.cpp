@@ -248,10 +248,9 @@ TEST(UnstretchedLength, InvertsTheEndTension) {
   EXPECT_THROW(unstretched_length_for_end_tension(a, b, ea, w, -1.0), UserError);
 }
 
-// The drawn shape: it starts and ends at the cable's ends, carries the end tensions of eq. 14, and its
-// polyline is as long as the stretched cable, the integral of 1 + T / EA over s0 (within the polyline's
-// O(1/n^2) chord error: 1e-3 at 64 segments). A slack heavy cable, a taut one, and one under a sideways load
-// (the solver's rotated frame).
+// The drawn shape: it starts and ends at the cable's ends, carries the end tensions of eq. 14, and its polyline is
+// as long as the stretched cable, the integral of 1 + T / EA over s0 (within the polyline's O(1/n^2) chord error:
+// 1e-3 at 64 segments). A slack heavy cable, a taut one, and one under a sideways load (the solver's rotated frame).
 TEST(CatenaryCurve, EndsAtTheEndsWithTheEndTensionsAndTheStretchedLength) {
   struct Case {
     Eigen::Vector2d a, b;

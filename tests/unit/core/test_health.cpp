@@ -1,5 +1,4 @@
-// The health log's bookkeeping (core/health.hpp): worst values by kind, the tally, the text form a checkpoint
-// keeps.
+// The health log's bookkeeping (core/health.hpp): worst values by kind, the tally, the text form a checkpoint keeps.
 #include <gtest/gtest.h>
 
 #include <cmath>

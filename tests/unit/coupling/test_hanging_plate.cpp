@@ -1,8 +1,7 @@
-// The hanging plate (structure.orientation: hanging, e.g. the Antoci et al. 2007 gate) is the standing plate
-// turned by 180 degrees about its clamp: the mesh, its clamped nodes, named nodes and counterclockwise
-// outline, and the plate-wall ghost lattice built from that outline (src/sph/plate_wall.cpp) must be the
-// standing plate's turned about the clamp, point for point, lattice offsets included (docs/coupling.md,
-// section 14).
+// The hanging plate (structure.orientation: hanging, e.g. the Antoci et al. 2007 gate) is the standing plate turned
+// by 180 degrees about its clamp: the mesh, its clamped nodes, named nodes and counterclockwise outline, and the
+// plate-wall ghost lattice built from that outline (src/sph/plate_wall.cpp) must be the standing plate's turned
+// about the clamp, point for point, lattice offsets included (docs/coupling.md, section 14).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -61,8 +60,7 @@ TEST(HangingPlate, MeshIsTheStandingMeshTurnedAboutTheClamp) {
     ASSERT_EQ(hanging.nodes.size(), standing.nodes.size());
     for (std::size_t n = 0; n < standing.nodes.size(); ++n)
       EXPECT_LT((hanging.nodes[n] - turned(standing.nodes[n])).norm(), 1e-15) << n;
-    // Clamped at the top: the clamped nodes are the highest, at the clamp's height, and nothing is above
-    // them.
+    // Clamped at the top: the clamped nodes are the highest, at the clamp's height, and nothing is above them.
     ASSERT_EQ(hanging.clamped_nodes, standing.clamped_nodes);
     for (int n : hanging.clamped_nodes) EXPECT_NEAR(hanging.nodes[n].y(), kClamp.y(), 1e-15);
     for (const auto& p : hanging.nodes) EXPECT_LE(p.y(), kClamp.y() + 1e-15);
@@ -121,9 +119,8 @@ TEST(HangingPlate, OutlineRunsDownTheLeftFaceAcrossTheBottomAndUpTheRightFaceWit
   EXPECT_NEAR(halfeti::test::closed_surface_area(m), 0.079 * 0.005, 1e-12);  // positive: counterclockwise
 }
 
-// The ghost lattice and the mid-line of the hanging plate are the standing plate's turned about the clamp,
-// with the lattice offsets given in the plate's own frame (as read_parameters hands them: first face, last
-// face, free end).
+// The ghost lattice and the mid-line of the hanging plate are the standing plate's turned about the clamp, with the
+// lattice offsets given in the plate's own frame (as read_parameters hands them: first face, last face, free end).
 TEST(HangingPlate, GhostLatticeIsTheStandingOnesTurnedAboutTheClamp) {
   const double dx = 0.001;
   const sph::Kernel kernel{sph::KernelKind::kCubicSpline, 1.33 * dx, 1.0};
@@ -154,8 +151,7 @@ TEST(HangingPlate, GhostLatticeIsTheStandingOnesTurnedAboutTheClamp) {
     // The hanging mid-line runs from the clamp down to the (offset) free end.
     EXPECT_NEAR(mh.front().ya, kClamp.y(), 1e-15);
     EXPECT_NEAR(mh.back().yb, kClamp.y() - 0.079 - offsets.top, 1e-12);
-    // The lowest ghost row lies half a spacing above the free end as the lattice sees it (lowered by
-    // offsets.top).
+    // The lowest ghost row lies half a spacing above the free end as the lattice sees it (lowered by offsets.top).
     EXPECT_NEAR(lowest, kClamp.y() - 0.079 - offsets.top + 0.5 * dx, 1e-12);
   }
 }

@@ -42,8 +42,8 @@ int iterations_to(InterfaceQuasiNewton& qn, const LinearMap& H, double tol, int 
 }
 
 TEST(InterfaceQuasiNewton, LinearMapConvergesWithinUnknownsPlusTwoEvaluations) {
-  // For a linear map the secant model is exact once it spans the space: n + 1 inputs give the answer, and one
-  // more evaluation confirms it (the residual to round-off).
+  // For a linear map the secant model is exact once it spans the space: n + 1 inputs give the answer, and one more
+  // evaluation confirms it (the residual to round-off).
   const int n = 6;
   const LinearMap H(n);
   InterfaceQuasiNewton qn({InterfaceAcceleration::kIqnIls, 0.5});
@@ -70,9 +70,8 @@ TEST(InterfaceQuasiNewton, PlainIterationDivergesWhereQuasiNewtonConverges) {
 }
 
 TEST(InterfaceQuasiNewton, WeakCouplingConvergesInTwoOrThreeEvaluations) {
-  // The water's within-step response to the plate is weak at WCSPH time steps (docs/coupling.md, section 16:
-  // the loop gain ~ 1e-2): H = 0.02 A / 1.8 + b. Plain iteration gains two digits a pass; IQN-ILS needs no
-  // more passes.
+  // The water's within-step response to the plate is weak at WCSPH time steps (docs/coupling.md, section 16: the
+  // loop gain ~ 1e-2): H = 0.02 A / 1.8 + b. Plain iteration gains two digits a pass; IQN-ILS needs no more passes.
   LinearMap H(6);
   H.A *= 0.02 / 1.8;
   InterfaceQuasiNewton qn({InterfaceAcceleration::kIqnIls, 1.0});

@@ -1,9 +1,9 @@
-// The plate's faces in the SPH sums (src/sph/plate_wall.cpp, docs/coupling.md section 12): the ghosts must
-// stand exactly for what the plate takes out of a particle's kernel support, beside a face, above the top and
-// round a corner alike. Checked on the paper's geometry (dx 1.5 mm, plate 3 mm x 8 cm, 2 x 60 Q9 surface)
-// with the water lattice the fluid starts from: the kernel sum over the real water the particle sees (pairs
-// crossing the plate's mid-line dropped) plus the ghosts must be a partition of unity, and the first moment
-// (the pressure force at uniform pressure) must vanish.
+// The plate's faces in the SPH sums (src/sph/plate_wall.cpp, docs/coupling.md section 12): the ghosts must stand
+// exactly for what the plate takes out of a particle's kernel support, beside a face, above the top and round a
+// corner alike. Checked on the paper's geometry (dx 1.5 mm, plate 3 mm x 8 cm, 2 x 60 Q9 surface) with the water
+// lattice the fluid starts from: the kernel sum over the real water the particle sees (pairs crossing the plate's
+// mid-line dropped) plus the ghosts must be a partition of unity, and the first moment (the pressure force at
+// uniform pressure) must vanish.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,8 +17,8 @@
 namespace halfeti::sph {
 namespace {
 
-// The paper's faces lie on lattice lines at dx 1.5 mm (99 and 101 dx); its top at 80 mm does not (53.33 dx),
-// and the lattice then sees the top at 79.5 mm (LatticeOffsets::top = -0.5 mm).
+// The paper's faces lie on lattice lines at dx 1.5 mm (99 and 101 dx); its top at 80 mm does not (53.33 dx), and the
+// lattice then sees the top at 79.5 mm (LatticeOffsets::top = -0.5 mm).
 constexpr double kDx = 0.0015, kLeft = 0.1485, kRight = 0.1515;
 
 PlateOutline paper_outline(double kTop) {
@@ -139,10 +139,10 @@ TEST_F(PlateWallSupport, GhostsCompleteTheSupportBesideAFaceAboveTheTopAndRoundA
   }
 }
 
-// All water lattice points within 6 mm of the plate's top corners: the worst sum and first moment (dx times
-// the gradient sum), both within 0.004, a thirtieth of one neighbour's share w_dx ~ 0.12. Before the ghosts
-// were laid in lattice rows, the previous layout (rows behind each face, a particle seeing only its closest
-// face's) gave 0.0046 and 0.0088 for this top.
+// All water lattice points within 6 mm of the plate's top corners: the worst sum and first moment (dx times the
+// gradient sum), both within 0.004, a thirtieth of one neighbour's share w_dx ~ 0.12. Before the ghosts were laid in
+// lattice rows, the previous layout (rows behind each face, a particle seeing only its closest face's) gave 0.0046 and
+// 0.0088 for this top.
 TEST_F(PlateWallSupport, EveryLatticePointNearTheTopSeesACompleteSupport) {
   scan_near_the_top();
 }
@@ -176,9 +176,9 @@ void PlateWallSupport::scan_near_the_top() {
 }
 
 TEST(PlateWallOffsets, ABentPlatesTopSlidesAlongItsFaces) {
-  // The paper's plate bent as x += c y^2 (tip 30 mm to the right), its top lowered by half a spacing: the
-  // corners slide 0.5 mm down their faces, so the top's middle moves 0.5 mm along the bent plate, and the
-  // faces keep pairing up (the layout is built without error).
+  // The paper's plate bent as x += c y^2 (tip 30 mm to the right), its top lowered by half a spacing: the corners
+  // slide 0.5 mm down their faces, so the top's middle moves 0.5 mm along the bent plate, and the faces keep
+  // pairing up (the layout is built without error).
   PlateOutline o = paper_outline(0.08);
   const double c = 0.03 / (0.08 * 0.08);
   for (std::size_t k = 0; k < o.size(); ++k) o.x[k] += c * o.y[k] * o.y[k];

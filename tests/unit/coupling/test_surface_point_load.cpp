@@ -1,6 +1,6 @@
-// The water's load on one surface point with the interface added mass (docs/coupling.md, section 13): the
-// load is handed on (extrapolated to mid-step), motion at constant velocity meets no added-mass force, an
-// acceleration over the step meets minus the added mass times its normal part, and the tangent is M_a / dt^2.
+// The water's load on one surface point with the interface added mass (docs/coupling.md, section 13): the load is
+// handed on (extrapolated to mid-step), motion at constant velocity meets no added-mass force, an acceleration over
+// the step meets minus the added mass times its normal part, and the tangent is M_a / dt^2.
 #include <gtest/gtest.h>
 
 #include "halfeti/coupling/contact_coupling.hpp"
@@ -60,9 +60,9 @@ TEST(SurfacePointLoad, AddedMassResistsAccelerationNormalToTheFaceOnly) {
   EXPECT_LT((tangent - Eigen::MatrixXd(added / (kDt * kDt))).norm(), 1e-9 * kMass / (kDt * kDt));
 }
 
-// The acoustic added mass (docs/coupling.md, section 15): with m_a = rho0 c0 dt per face area, a face whose
-// normal velocity changes by dv over the step meets the water's acoustic impedance, the force -rho0 c0 A dv n
-// (a piston's pressure jump rho0 c0 dv, Joukowsky), whatever the step; a tangential change meets nothing.
+// The acoustic added mass (docs/coupling.md, section 15): with m_a = rho0 c0 dt per face area, a face whose normal
+// velocity changes by dv over the step meets the water's acoustic impedance, the force -rho0 c0 A dv n (a piston's
+// pressure jump rho0 c0 dv, Joukowsky), whatever the step; a tangential change meets nothing.
 TEST(SurfacePointLoad, AcousticAddedMassIsTheWatersImpedance) {
   halfeti::coupling::CouplingParameters p;
   p.density = 1000.0;

@@ -1,5 +1,5 @@
-// The error metrics' one home (io/metrics.hpp) on synthetic curves whose answers are known in closed form,
-// and `halfeti compare` (io/compare_tool.hpp) on a probes file and a reference file written here.
+// The error metrics' one home (io/metrics.hpp) on synthetic curves whose answers are known in closed form, and
+// `halfeti compare` (io/compare_tool.hpp) on a probes file and a reference file written here.
 #include <gtest/gtest.h>
 
 #include <cmath>

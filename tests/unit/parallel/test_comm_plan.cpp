@@ -1,6 +1,6 @@
-// The neighbour-only communication plan on 1-4 ranks: the same items in the same places as MPI_Alltoallv
-// gives, for sparse patterns found by discovery (many rounds back to back, so a fast rank's next round cannot
-// be taken for the last) and for symmetric peer sets; messages go to the ranks that receive something only.
+// The neighbour-only communication plan on 1-4 ranks: the same items in the same places as MPI_Alltoallv gives,
+// for sparse patterns found by discovery (many rounds back to back, so a fast rank's next round cannot be taken
+// for the last) and for symmetric peer sets; messages go to the ranks that receive something only.
 #include <gtest/gtest.h>
 #include <mpi.h>
 
@@ -12,8 +12,7 @@
 using namespace halfeti::parallel;
 
 namespace {
-// Items rank r sends to rank d in round k: a sparse pattern (about half the pairs empty), the same on every
-// rank.
+// Items rank r sends to rank d in round k: a sparse pattern (about half the pairs empty), the same on every rank.
 int pattern(int round, int r, int d, int size) {
   std::mt19937 rng(static_cast<unsigned>(1000 * round + 31 * r + d));
   const int n = static_cast<int>(rng() % 7);
@@ -63,8 +62,8 @@ TEST(CommPlan, DiscoveryGivesAlltoallvsLayoutRoundAfterRound) {
 }
 
 TEST(CommPlan, HaloTalksToNeighbourRanksOnly) {
-  // A strip of cells split into one block per rank: each rank's neighbours are the blocks beside it (at most
-  // 2), whatever the rank count, and its halo messages a step are twice that (counts, then data).
+  // A strip of cells split into one block per rank: each rank's neighbours are the blocks beside it (at most 2),
+  // whatever the rank count, and its halo messages a step are twice that (counts, then data).
   int rank = 0, size = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &size);

@@ -1,5 +1,5 @@
-// Halo plan and particle migration across 1-4 ranks: ghosts are exactly the other ranks' particles in the
-// cells around one's own, and migration neither loses nor duplicates particles.
+// Halo plan and particle migration across 1-4 ranks: ghosts are exactly the other ranks' particles in the cells
+// around one's own, and migration neither loses nor duplicates particles.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -46,8 +46,8 @@ TEST(Decomposition, PartitionIsBalancedAndUsesEveryRank) {
   EXPECT_EQ(static_cast<int>(used.size()), s.size);
 }
 
-// Rank 0 may take a smaller share (it also solves the structure): with first_share 0.5 on n parts its target
-// is 0.5 / (n - 0.5) of the weight; METIS meets the targets within its default 3 % tolerance (plus one cell's
+// Rank 0 may take a smaller share (it also solves the structure): with first_share 0.5 on n parts its target is
+// 0.5 / (n - 0.5) of the weight; METIS meets the targets within its default 3 % tolerance (plus one cell's
 // weight), and the imbalance is measured against them.
 TEST(Decomposition, FirstPartTakesItsShare) {
   const auto t = part_targets(3, 0.5);

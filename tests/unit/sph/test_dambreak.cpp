@@ -1,6 +1,5 @@
-// Dam break (validation ladder step 2): surge front of a 2D water column a x 2a, a = 2.25 in, against Martin
-// & Moyce (1952), inputs/validation/data. Reports the error at every data point and checks the RMS relative
-// error.
+// Dam break (validation ladder step 2): surge front of a 2D water column a x 2a, a = 2.25 in, against Martin &
+// Moyce (1952), inputs/validation/data. Reports the error at every data point and checks the RMS relative error.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -25,18 +24,17 @@ TEST(DamBreak, SurgeFrontFollowsMartinMoyce) {
   p.tank_height = 3.0 * a;
   p.spacing = a / 25.0;
   p.water = {{0.0, 0.0, a, 2.0 * a, 0.0}};
-  // eq. 10 with the flow's own velocity scale: the surge runs at up to Ritter's 2 sqrt(g d), d = 2a (2.1
-  // m/s), twice the long-wave speed sqrt(g d) the automatic c0 assumes; c0 = u_b / sqrt(drho/rho0) = 30 m/s
-  // for drho/rho0 = 0.5%. (The automatic 15 m/s lets the front run 1.2% further: docs/sph.md.)
+  // eq. 10 with the flow's own velocity scale: the surge runs at up to Ritter's 2 sqrt(g d), d = 2a (2.1 m/s),
+  // twice the long-wave speed sqrt(g d) the automatic c0 assumes; c0 = u_b / sqrt(drho/rho0) = 30 m/s for
+  // drho/rho0 = 0.5%. (The automatic 15 m/s lets the front run 1.2% further: docs/sph.md.)
   p.sound_speed = 2.0 * std::sqrt(p.gravity * 2.0 * a) / std::sqrt(0.5 * p.max_density_variation);
-  // The experiment's floor drags the surge (its late front runs at 1.69 a sqrt(2g/a) against the
-  // free-slip 1.81): the smooth-wall law of the wall on the first particle layer (wall_friction.hpp), no
-  // fitted constant.
+  // The experiment's floor drags the surge (its late front runs at 1.69 a sqrt(2g/a) against the free-slip 1.81):
+  // the smooth-wall law of the wall on the first particle layer (wall_friction.hpp), no fitted constant.
   p.wall_friction = WallFriction::kLogLaw;
   Fluid fluid(MPI_COMM_WORLD, p, nullptr);
   const double tscale = std::sqrt(2.0 * p.gravity / a);  // T* = t sqrt(2 g / a)
-  // The surge's speed dZ/dT*: least-squares slopes of the data and of the run over the points from T* = 4.4
-  // on, where the data lie on a straight line (the surge after the collapse).
+  // The surge's speed dZ/dT*: least-squares slopes of the data and of the run over the points from T* = 4.4 on,
+  // where the data lie on a straight line (the surge after the collapse).
   const double surge_from = 4.4;
   double n = 0, st = 0, st2 = 0, sz = 0, stz = 0, sr = 0, str = 0;
   int rank = 0;
@@ -65,13 +63,13 @@ TEST(DamBreak, SurgeFrontFollowsMartinMoyce) {
   const double slope_data = (n * stz - st * sz) / (n * st2 - st * st),
                slope = (n * str - st * sr) / (n * st2 - st * st);
   const double slope_err = (slope - slope_data) / slope_data;
-  // The target is 5 % over all 15 points; not met (docs/sph.md, "Dam break", has the tables). Before T* = 4.4
-  // the front leads the data by +8..+16 % with free-slip walls and with the wall friction alike (and by more
-  // at a/40): the first 0.2 s of the collapse, which the floor's friction cannot reach; the experiment's
-  // release, which the run does not model, is the likely cause. The surge's speed after it is bracketed: free
-  // slip +6.9 %, the law of the wall -7.0 % (-5.0 % at a/40); the friction's positions agree better late
-  // (-1.6..+4.9 %) partly because its slower surge eats the early lead. Guards: RMS at most 8.5 %
-  // (measured 7.8 %; free slip 10.2 %) and the surge's speed within 8 % of the data's (measured -7.0 %).
+  // The target is 5 % over all 15 points; not met (docs/sph.md, "Dam break", has the tables). Before T* = 4.4 the
+  // front leads the data by +8..+16 % with free-slip walls and with the wall friction alike (and by more at a/40):
+  // the first 0.2 s of the collapse, which the floor's friction cannot reach; the experiment's release, which the
+  // run does not model, is the likely cause. The surge's speed after it is bracketed: free slip +6.9 %, the law of
+  // the wall -7.0 % (-5.0 % at a/40); the friction's positions agree better late (-1.6..+4.9 %) partly because its
+  // slower surge eats the early lead. Guards: RMS at most 8.5 % (measured 7.8 %; free slip 10.2 %) and the surge's
+  // speed within 8 % of the data's (measured -7.0 %).
   if (rank == 0)
     std::printf(
         "RMS relative error %.2f%% over %zu points; surge speed dZ/dT* from T* = %.1f: %.3f (data %.3f, "

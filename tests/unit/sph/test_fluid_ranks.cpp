@@ -1,5 +1,5 @@
-// Principle 5: a small sloshing box shaken sideways gives bitwise the same particles (gathered by global id)
-// and probes on 1, 2, 3 and 4 ranks. Rank 0 recomputes the run alone on MPI_COMM_SELF as the reference.
+// Principle 5: a small sloshing box shaken sideways gives bitwise the same particles (gathered by global id) and
+// probes on 1, 2, 3 and 4 ranks. Rank 0 recomputes the run alone on MPI_COMM_SELF as the reference.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -89,8 +89,8 @@ TEST(FluidRanks, BitwiseIdenticalToOneRank) {
 }
 
 namespace {
-// A plate standing in the box, 2 cm thick and 6 cm high, its faces moving sideways at `speed`: up the right
-// face, across the top, down the left face (the outline's convention).
+// A plate standing in the box, 2 cm thick and 6 cm high, its faces moving sideways at `speed`: up the right face,
+// across the top, down the left face (the outline's convention).
 PlateOutline standing_plate(double speed) {
   PlateOutline o;
   auto add = [&](double x, double y) {
@@ -118,9 +118,9 @@ std::vector<double> gathered_state(MPI_Comm comm, const Fluid& fluid) {
 }
 }  // namespace
 
-// The converged plate-water exchange repeats each step (docs/coupling.md, section 16): a step taken with the
-// wrong plate motion and rolled back, then taken with the right one and the density deferred, must give the
-// bits of the step taken once. Over 60 steps with rebalancing every 10 and migration, on 1-4 ranks.
+// The converged plate-water exchange repeats each step (docs/coupling.md, section 16): a step taken with the wrong
+// plate motion and rolled back, then taken with the right one and the density deferred, must give the bits of the
+// step taken once. Over 60 steps with rebalancing every 10 and migration, on 1-4 ranks.
 TEST(FluidRanks, RolledBackStepRepeatsBitForBit) {
   Shake shake;
   const PlateOutline right = standing_plate(0.05), wrong = standing_plate(-0.3);

@@ -1,14 +1,13 @@
 // Forced sloshing against linear potential theory: the paper's tank (0.30 m, 0.10 m of water) under a small
-// one-cycle cosine pulse, a_g = 0.5 cos(2 pi t / 0.6) m/s^2. This checks the tank frame's body force -a_g
-// (its size, sign and timing) on the water, the part of the coupled runs that every response starts from.
+// one-cycle cosine pulse, a_g = 0.5 cos(2 pi t / 0.6) m/s^2. This checks the tank frame's body force -a_g (its size,
+// sign and timing) on the water, the part of the coupled runs that every response starts from.
 //
 // Reference: tests/support/linear_sloshing.hpp (modal solution, 101 odd modes). The wall elevations are split
-// into the part odd about the tank's centre, (eta_left - eta_right) / 2, which carries the linear (and
-// third-order) response, and the even part, (eta_left + eta_right) / 2, which linear theory says is zero: it
-// is the second-order set-down/set-up of the crests and troughs, of relative size k eta ~ 0.1 here. The
-// elevation probe (top particle within dx of x, plus dx/2) has the same offset at both walls, so it cancels
-// in the odd part. Bounds, over the pulse (0 <= t <= T, before the second-order build-up of the free
-// oscillation that follows):
+// into the part odd about the tank's centre, (eta_left - eta_right) / 2, which carries the linear (and third-order)
+// response, and the even part, (eta_left + eta_right) / 2, which linear theory says is zero: it is the
+// second-order set-down/set-up of the crests and troughs, of relative size k eta ~ 0.1 here. The elevation probe
+// (top particle within dx of x, plus dx/2) has the same offset at both walls, so it cancels in the odd part.
+// Bounds, over the pulse (0 <= t <= T, before the second-order build-up of the free oscillation that follows):
 //  * odd part against linear theory: RMS at most 3 % of the linear peak and the peak within 3 % (third-order
 //    terms are (k eta)^2 ~ 1 %; numerical dissipation over one period is of that order too);
 //  * even part: at most 2 k eta_peak^2 (twice the second-order estimate).
@@ -34,8 +33,8 @@ TEST(ForcedSloshing, WallElevationFollowsLinearTheoryUnderASmallPulse) {
   const halfeti::test::LinearSloshing theory{L, d, p.gravity};
   const double xl = 0.5 * p.spacing, xr = L - 0.5 * p.spacing;  // the probes' columns, as the sloshing test's
 
-  // The odd part of the two walls' elevations (the first mode's), its even part, and linear theory's odd
-  // part, at every step; compared through the metrics' one home (io/metrics.hpp).
+  // The odd part of the two walls' elevations (the first mode's), its even part, and linear theory's odd part, at
+  // every step; compared through the metrics' one home (io/metrics.hpp).
   halfeti::io::Curve odd, even, lin;
   while (fluid.time() < T) {
     fluid.step();
@@ -65,8 +64,8 @@ TEST(ForcedSloshing, WallElevationFollowsLinearTheoryUnderASmallPulse) {
   EXPECT_LT(peak_even, even_bound);
 }
 
-// The reference itself: its static response is the tilt a_g (L/2 - xi) / g of a steadily accelerated tank,
-// its two branches (during and after the pulse) join at t = T, and it starts from rest.
+// The reference itself: its static response is the tilt a_g (L/2 - xi) / g of a steadily accelerated tank, its
+// two branches (during and after the pulse) join at t = T, and it starts from rest.
 TEST(ForcedSloshing, ReferenceHasTheStaticTiltAndJoinsItsBranches) {
   const halfeti::test::LinearSloshing theory;
   const double a = 0.5, L = theory.length;

@@ -41,9 +41,8 @@ TEST(Health, ParticleOutsideTheTankIsFatalWithOneClearMessage) {
 }
 
 TEST(Health, WaterThrownOverTheOpenTopIsRemovedAndCounted) {
-  // A block of 2 x 4 particles above the tank's 0.10 m top: it leaves the run at the first step, not as an
-  // error; the mass still in the tank plus the spilled mass is the initial mass (to round-off), one warning
-  // says so.
+  // A block of 2 x 4 particles above the tank's 0.10 m top: it leaves the run at the first step, not as an error;
+  // the mass still in the tank plus the spilled mass is the initial mass (to round-off), one warning says so.
   FluidParams p = small_tank();
   p.water.push_back({0.04, 0.10, 0.06, 0.11, 0.0});
   Fluid fluid(MPI_COMM_WORLD, p, nullptr);
@@ -80,8 +79,8 @@ TEST(Health, BlowUpIsReportedNotWritten) {
 }
 
 TEST(Hooks, TwoParticlesMovedOntoOnePointKeepFiniteRates) {
-  // The contact's relocation (eq. 22) can put two deep invaders on the same point of the surface; the delta
-  // term's r_ji / r^2 must not turn that into NaN. Each rank moves its second owned particle onto its first.
+  // The contact's relocation (eq. 22) can put two deep invaders on the same point of the surface; the delta term's
+  // r_ji / r^2 must not turn that into NaN. Each rank moves its second owned particle onto its first.
   Fluid fluid(MPI_COMM_WORLD, small_tank(), nullptr);
   fluid.compute_forces();
   fluid.predict();
@@ -97,10 +96,10 @@ TEST(Hooks, TwoParticlesMovedOntoOnePointKeepFiniteRates) {
 }
 
 TEST(Hooks, CorrectionsDoNotPushParticlesIntoTheTankWalls) {
-  // A correction that would carry a particle through the floor or a side wall (the contact at the plate's
-  // foot) stops at the nearer of its predicted distance and dx/2; a particle that ends within one spacing of
-  // a wall keeps no velocity correction into it (the wall takes that impulse), a correction along the wall or
-  // away from it is kept. A correction inside the tank is applied as given.
+  // A correction that would carry a particle through the floor or a side wall (the contact at the plate's foot)
+  // stops at the nearer of its predicted distance and dx/2; a particle that ends within one spacing of a wall
+  // keeps no velocity correction into it (the wall takes that impulse), a correction along the wall or away from
+  // it is kept. A correction inside the tank is applied as given.
   const FluidParams p = small_tank();
   Fluid fluid(MPI_COMM_WORLD, p, nullptr);
   fluid.compute_forces();

@@ -32,10 +32,9 @@ TEST(Hydrostatic, PressureFollowsRhoGDepthAfterOneSecond) {
   std::printf("steps %ld, max density variation %.4f%%, kinetic energy %.3e J/m\n", fluid.step_count(),
               100.0 * fluid.max_density_variation(), fluid.kinetic_energy());
   EXPECT_LT(fluid.max_density_variation(), 0.01);
-  // The kernel-interpolated surface level: the still surface d (the top particles' centres + dx/2), in
-  // mid-tank and beside either wall (the walls mirror the water), within a quarter spacing (the water's
-  // compression under its weight lowers the top by rho g d / (rho0 c0^2) d, about 0.1 % of d here), as the
-  // top-particle elevation.
+  // The kernel-interpolated surface level: the still surface d (the top particles' centres + dx/2), in mid-tank
+  // and beside either wall (the walls mirror the water), within a quarter spacing (the water's compression under
+  // its weight lowers the top by rho g d / (rho0 c0^2) d, about 0.1 % of d here), as the top-particle elevation.
   for (double x : {0.15, 0.001, 0.299}) {
     const double level = fluid.surface_level(x), top = fluid.free_surface_elevation(x);
     std::printf("x = %.3f m: surface level %.5f m, top particle + dx/2 %.5f m (still depth %.3f m)\n", x,
@@ -49,8 +48,8 @@ TEST(Hydrostatic, PressureFollowsRhoGDepthAfterOneSecond) {
 }
 
 TEST(Hydrostatic, TheSurfaceLevelIgnoresSprayAboveTheBulk) {
-  // A lump of water (4 x 2 particles) 10 cm above the surface, as a run-up jet's spray: the top-particle
-  // elevation follows it, the kernel-interpolated level stays at the bulk's surface.
+  // A lump of water (4 x 2 particles) 10 cm above the surface, as a run-up jet's spray: the top-particle elevation
+  // follows it, the kernel-interpolated level stays at the bulk's surface.
   FluidParams p;
   p.tank_length = 0.30;
   p.tank_height = 0.40;

@@ -1,5 +1,4 @@
-// Neighbour search against brute force, canonical order, renormalised gradient exactness and the still
-// lattice.
+// Neighbour search against brute force, canonical order, renormalised gradient exactness and the still lattice.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -153,9 +152,8 @@ TEST(Kernel, EvaluatorMatchesKernel) {
   }
 }
 
-// The pair search's vectorised loop must give exactly what one evaluation gives (the sums over pairs, and so
-// the results, must not depend on how the kernel was evaluated), on both pieces, at the joint q = 1 and at r
-// = 0.
+// The pair search's vectorised loop must give exactly what one evaluation gives (the sums over pairs, and so the
+// results, must not depend on how the kernel was evaluated), on both pieces, at the joint q = 1 and at r = 0.
 TEST(Kernel, BatchIsBitwiseTheSingleEvaluation) {
   for (auto kind : {KernelKind::kCubicSpline, KernelKind::kWendlandC2}) {
     Kernel k{kind, 0.002};

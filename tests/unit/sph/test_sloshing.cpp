@@ -20,8 +20,8 @@ TEST(Sloshing, FirstModeFrequency) {
   p.water = {{0.0, 0.0, L, d, A}};
   Fluid fluid(MPI_COMM_WORLD, p, nullptr);
   const double k = M_PI / L, f_theory = std::sqrt(p.gravity * k * std::tanh(k * d)) / (2.0 * M_PI);
-  // Elevation at the left wall, sampled every step, over 3.2 s (four periods and more); the frequency from
-  // the upward crossings of the still depth d (io/metrics.hpp).
+  // Elevation at the left wall, sampled every step, over 3.2 s (four periods and more); the frequency from the
+  // upward crossings of the still depth d (io/metrics.hpp).
   halfeti::io::Curve eta{{0.0}, {fluid.free_surface_elevation(0.5 * p.spacing)}};
   while (fluid.time() < 3.2) {
     fluid.step();

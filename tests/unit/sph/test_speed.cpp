@@ -1,6 +1,6 @@
 // Speed (DESIGN principle 3): the paper's tank, 0.30 x 0.40 m, 0.10 m of water at dx = 1.5 mm (~13,400
-// particles), 0.1 s of small horizontal excitation. Prints ns per particle-step and the phase timers; run it
-// at 1 and 2 ranks. Checks only that it ran and stayed healthy (figures go to docs/sph.md).
+// particles), 0.1 s of small horizontal excitation. Prints ns per particle-step and the phase timers; run it at 1
+// and 2 ranks. Checks only that it ran and stayed healthy (figures go to docs/sph.md).
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -40,8 +40,7 @@ TEST(Speed, PaperTankTenthOfASecond) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double particle_steps = static_cast<double>(fluid.global_count()) * fluid.step_count();
   const double ns = 1e9 * wall / particle_steps;
-  // CPU time summed over ranks / ranks: what the wall time would be on an idle machine (the test machine is
-  // shared).
+  // CPU time summed over ranks / ranks: what the wall time would be on an idle machine (the test machine is shared).
   double cpu = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   MPI_Allreduce(MPI_IN_PLACE, &cpu, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
   if (rank == 0) {

@@ -1,14 +1,13 @@
-// A film of water on a vertical wall, released at rest with nothing under it, must fall at g: the wall is
-// free slip and at rest, and the only force it can put on the film is normal to it. The wall ghosts' pressure
-// used to be continued from the film particle with the whole body force, p_g = p_i + rho_i b.(r_g - r_i)
-// (Adami et al. 2012): along a vertical wall that is a vertical pressure gradient rho g behind a film whose
-// own pressure is about 0, and the ghosts held up part of its weight (in the shaken tank at dx = 1.5 mm the
-// top of the wall film fell at 7.8 m/s^2; docs/sph.md "Wall films"). The ghosts' pressure is now continued
-// along the wall with the particle's own gradient (eqs. 6, 9), bounded by rho |b|. The old continuation is
-// run too, to show that the test tells them apart. Measured: the mean vertical velocity of the film after T =
-// 0.04 s, a =
-// -<v_y>(T) / T. Internal forces cancel pair by pair (eq. 4's symmetric form), so a - g is the wall's
-// vertical force on the film per unit mass.
+// A film of water on a vertical wall, released at rest with nothing under it, must fall at g: the wall is free
+// slip and at rest, and the only force it can put on the film is normal to it. The wall ghosts' pressure used to
+// be continued from the film particle with the whole body force, p_g = p_i + rho_i b.(r_g - r_i) (Adami et al.
+// 2012): along a vertical wall that is a vertical pressure gradient rho g behind a film whose own pressure is
+// about 0, and the ghosts held up part of its weight (in the shaken tank at dx = 1.5 mm the top of the wall film
+// fell at 7.8 m/s^2; docs/sph.md "Wall films"). The ghosts' pressure is now continued along the wall with the
+// particle's own gradient (eqs. 6, 9), bounded by rho |b|. The old continuation is run too, to show that the test
+// tells them apart. Measured: the mean vertical velocity of the film after T = 0.04 s, a =
+// -<v_y>(T) / T. Internal forces cancel pair by pair (eq. 4's symmetric form), so a - g is the wall's vertical
+// force on the film per unit mass.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,8 +18,8 @@
 using namespace halfeti::sph;
 
 namespace {
-// Fall acceleration of a film `columns` particles thick and 20 tall against the left wall, its bottom 0.10 m
-// above the floor (it falls 7.8 mm in T, so it stays clear of the floor).
+// Fall acceleration of a film `columns` particles thick and 20 tall against the left wall, its bottom 0.10 m above
+// the floor (it falls 7.8 mm in T, so it stays clear of the floor).
 double film_fall_acceleration(int columns, WallGhostPressure continuation) {
   const double dx = 0.002, T = 0.04;
   FluidParams p;
@@ -40,9 +39,8 @@ double film_fall_acceleration(int columns, WallGhostPressure continuation) {
 }  // namespace
 
 // Tolerance 1% of g (0.02% measured): the film's own acoustic oscillation (it starts with the hydrostatic
-// pressure of a 40 mm column and falls freely, so that pressure relaxes to 0 in a few sound-crossing times)
-// feeds the along-wall gradient for part of T; the held-up weight to be removed was 8-25% (the old
-// continuation).
+// pressure of a 40 mm column and falls freely, so that pressure relaxes to 0 in a few sound-crossing times) feeds
+// the along-wall gradient for part of T; the held-up weight to be removed was 8-25% (the old continuation).
 TEST(WallFilm, FallsAtGravity) {
   const double g = 9.81;
   for (int columns : {1, 2, 3}) {

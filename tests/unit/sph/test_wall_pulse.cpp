@@ -1,17 +1,15 @@
-// The water-only tank (0.30 m, 0.10 m of water) under a sudden horizontal body force: the first quarter of
-// the paper's one-cycle cosine pulse, a_g(t) = -3.13 cos(2 pi t / 0.6) m/s^2, so the tank frame's body force
-// b_x = +3.13 cos(...) pulls the water away from the left wall from t = 0 on. Before the fix of the wall
-// pressure (docs/ sph.md, "Walls") the particles at the left wall near the surface were torn off it: 1.5 m/s
-// and -22 kPa within 0.02 s at dx = 2 mm. Bounds, physically:
-//  * speed: no force but b_x drives the water relative to the tank, so a parcel's speed is of the order of
-//  its
+// The water-only tank (0.30 m, 0.10 m of water) under a sudden horizontal body force: the first quarter of the
+// paper's one-cycle cosine pulse, a_g(t) = -3.13 cos(2 pi t / 0.6) m/s^2, so the tank frame's body force b_x =
+// +3.13 cos(...) pulls the water away from the left wall from t = 0 on. Before the fix of the wall pressure (docs/
+// sph.md, "Walls") the particles at the left wall near the surface were torn off it: 1.5 m/s and -22 kPa within
+// 0.02 s at dx = 2 mm. Bounds, physically:
+//  * speed: no force but b_x drives the water relative to the tank, so a parcel's speed is of the order of its
 //    impulse, int_0^t b_x dt' = (3.13 * 0.6 / 2 pi) sin(2 pi t / 0.6) <= 0.30 m/s at t = 0.15 s; twice that
-//    (0.60 m/s) allows the local amplification at the contact lines, where the linear solution has a weak
-//    (log) singularity, and the run-up at the right wall.
+//    (0.60 m/s) allows the local amplification at the contact lines, where the linear solution has a weak (log)
+//    singularity, and the run-up at the right wall.
 //  * pressure: the impulsive (incompressible) pressure is -rho a L / 2 = -470 Pa at the left wall relative to
-//    hydrostatic; the weakly compressible start adds an expansion wave of at most rho c0 Delta u with Delta u
-//    = a L / c0 (the time the wave needs to cross the tank), i.e. rho a L = -940 Pa in all; p_min >= -rho a
-//    L.
+//    hydrostatic; the weakly compressible start adds an expansion wave of at most rho c0 Delta u with Delta u =
+//    a L / c0 (the time the wave needs to cross the tank), i.e. rho a L = -940 Pa in all; p_min >= -rho a L.
 //  * density: within the 1% monitor.
 #include <gtest/gtest.h>
 

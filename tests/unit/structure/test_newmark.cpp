@@ -1,8 +1,7 @@
-// Newmark's integrator alone (newmark.hpp), on closed forms: a constant acceleration integrated exactly; on
-// the harmonic oscillator u'' + w^2 u = 0 the trapezoidal rule keeps the energy to round-off with the period
-// lengthened by (w dt)^2 / 12 (Hughes 1987, The Finite Element Method, section 9.3), and gamma > 1/2 damps
-// with the algorithmic damping ratio (gamma - 1/2) w dt / 2 at small w dt; the stability check of its
-// parameters.
+// Newmark's integrator alone (newmark.hpp), on closed forms: a constant acceleration integrated exactly; on the
+// harmonic oscillator u'' + w^2 u = 0 the trapezoidal rule keeps the energy to round-off with the period
+// lengthened by (w dt)^2 / 12 (Hughes 1987, The Finite Element Method, section 9.3), and gamma > 1/2 damps with
+// the algorithmic damping ratio (gamma - 1/2) w dt / 2 at small w dt; the stability check of its parameters.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -75,8 +75,7 @@ TEST(PlateMesh, SurfaceIsAContinuousCounterclockwiseChainWithoutTheBase) {
 }
 
 // The Q4 mesh (element q4_eas): the same named nodes, base and counterclockwise surface as the Q9 mesh of the
-// same cells, with (cells + 1) nodes per line; 2-node edges; tensor-order quads; an odd count across is
-// refused.
+// same cells, with (cells + 1) nodes per line; 2-node edges; tensor-order quads; an odd count across is refused.
 TEST(PlateMesh, Q4MeshHasTheSameNamedNodesBaseAndSurface) {
   auto g = geometry(2, 10);
   g.element = hs::ElementType::kQ4Eas;

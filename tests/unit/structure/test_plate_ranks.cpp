@@ -72,8 +72,8 @@ TEST(PlateRanks, SameAnswerOnOneAndSeveralRanks) {
     EXPECT_NEAR(shared.strain_energy, alone.strain_energy, 1e-10 * alone.strain_energy);
     EXPECT_NEAR(shared.kinetic_energy, alone.kinetic_energy, 1e-8 * alone.kinetic_energy);
     EXPECT_NEAR(shared.max_von_mises, alone.max_von_mises, 1e-8 * alone.max_von_mises);
-    // The output's per-element fields: the energy densities integrate to the strain energy, the element means
-    // stay below the largest point value (and above half of it in this bending), on any rank count.
+    // The output's per-element fields: the energy densities integrate to the strain energy, the element means stay
+    // below the largest point value (and above half of it in this bending), on any rank count.
     EXPECT_NEAR(shared.energy_from_density, shared.strain_energy, 1e-10 * shared.strain_energy);
     EXPECT_LE(shared.max_element_von_mises, shared.max_von_mises * (1 + 1e-12));
     EXPECT_GT(shared.max_element_von_mises, 0.5 * shared.max_von_mises);
@@ -102,8 +102,8 @@ TEST(PlateRanks, PartitionOwnsEveryNodeOnce) {
 
 namespace {
 
-// An element inverted on one rank only (the crushed top elements belong to one METIS part) stops every rank
-// with the same NumericalError instead of leaving the others waiting in the residual's reduction.
+// An element inverted on one rank only (the crushed top elements belong to one METIS part) stops every rank with
+// the same NumericalError instead of leaving the others waiting in the residual's reduction.
 TEST(PlateRanks, InvertedElementStopsEveryRank) {
   hs::PlateSolver s(PETSC_COMM_WORLD, hs::testing::paper_plate(1, 10));
   s.add_edge_load("top", Eigen::Vector2d(0.0, -5e7));  // Pa: crushes the top elements in the first iterate

@@ -43,8 +43,8 @@ TEST(PlateSolver, NodalElementEntersTheNewtonSystem) {
   EXPECT_NEAR(static_tip(held, load) * 3.0 * k_plate / load, 1.0, 1e-4);  // springs in parallel
 }
 
-// Both elements: with Q4-EAS the enhanced parameters are element state (solved at each full assembly, moved
-// by the increment), and the residual-only check of step() must not change them.
+// Both elements: with Q4-EAS the enhanced parameters are element state (solved at each full assembly, moved by
+// the increment), and the residual-only check of step() must not change them.
 class PlateSolverByElement : public ::testing::TestWithParam<hs::ElementType> {
  protected:
   hs::StructureParameters plate(int along) const {
@@ -120,8 +120,8 @@ TEST_P(PlateSolverByElement, FullNewtonConvergesQuadratically) {
       hs::testing::bending_stiffness(p) / (p.geometry.height * p.geometry.height);  // alpha = 1
   s.add_edge_load("top", Eigen::Vector2d(load / p.geometry.thickness, 0.0));
   const int iterations = s.solve_static(0.0, 1).newton_iterations;
-  // Q4-EAS takes two more iterations on the way in (measured 11 against Q9's 9 from this one increment; both
-  // end quadratically, 5e-3 -> 8e-6 -> 1e-9 N/m, the last at round-off).
+  // Q4-EAS takes two more iterations on the way in (measured 11 against Q9's 9 from this one increment; both end
+  // quadratically, 5e-3 -> 8e-6 -> 1e-9 N/m, the last at round-off).
   EXPECT_LE(iterations, GetParam() == hs::ElementType::kQ4Eas ? 12 : 10);
   EXPECT_GT(s.displacement(s.mesh().node("top_centre")).x(), 0.25 * p.geometry.height);
 }

@@ -224,9 +224,9 @@ TEST_P(PlateValidationByElement, TrapezoidalRuleConservesEnergy) {
   // over 10 periods at T/40, 0.075% -> 1e-7, 0.23% -> 8e-7, 0.75% -> 9e-6 (docs/structure.md). Much smaller
   // amplitudes hit the round-off of the energy itself (I1 - 3 and ln J cancel to ~1e-16 / strain relative).
   // Q4-EAS on the paper's 2 x 60 mesh, the same load. The drift depends on the mesh through its stiff modes'
-  // nonlinear exchange with the first one (measured 1e-7 to 4e-7 for Q9 1 x 10 / 1 x 40 / 1 x 60, Q4-EAS 2 x
-  // 10 / 2 x 40 / 2 x 60; Q4-EAS 2 x 20 is an outlier at 1.5e-6, which scales as amplitude^2 and falls as
-  // dt^3.6, so it is the time integrator's, not an element inconsistency).
+  // nonlinear exchange with the first one (measured 1e-7 to 4e-7 for Q9 1 x 10 / 1 x 40 / 1 x 60, Q4-EAS 2 x 10 /
+  // 2 x 40 / 2 x 60; Q4-EAS 2 x 20 is an outlier at 1.5e-6, which scales as amplitude^2 and falls as dt^3.6, so
+  // it is the time integrator's, not an element inconsistency).
   const auto p = plate(q4() ? 2 : 1, q4() ? 60 : 20);
   const Eigen::Vector3d r = free_vibration(p, 0.01, 100, 40);
   std::printf(
@@ -262,9 +262,9 @@ TEST(PlateValidation, SuddenTankAccelerationDoublesTheDeflection) {
 TEST_P(PlateValidationByElement, NewtonIterationCost) {
   // Breakdown of one Newton iteration at the paper's dt on an unloaded machine-independent case: the element
   // kernel alone (force + tangent of every element), the whole assembly, the numeric factorisation (PCSetUp)
-  // and the triangular solves (KSPSolve with the factors in place). PETSc options on the command line reach
-  // the plate's KSP (-structure_pc_type cholesky, ...). The machine is shared: the mean over all iterations
-  // and the best of 20 batches of 50 (closest to an unloaded core) are printed.
+  // and the triangular solves (KSPSolve with the factors in place). PETSc options on the command line reach the
+  // plate's KSP (-structure_pc_type cholesky, ...). The machine is shared: the mean over all iterations and the
+  // best of 20 batches of 50 (closest to an unloaded core) are printed.
   std::printf("load average (1, 5, 15 min): %s\n", load_average().c_str());
   const std::vector<std::pair<int, int>> meshes =
       q4() ? std::vector<std::pair<int, int>>{{2, 60}, {4, 120}}

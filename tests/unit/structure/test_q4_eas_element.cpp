@@ -1,8 +1,8 @@
 // The Q4 enhanced-strain integrator (Q1/E4, Simo & Armero 1992): condensed internal force against finite
-// differences of the condensed energy, consistent condensed tangent against finite differences of the
-// condensed force (the local solve of the enhanced parameters inside every evaluation), both materials and
-// hypotheses, on a distorted element under a strong non-affine deformation; closed-form kernel = general
-// path; patch test and rigid rotation.
+// differences of the condensed energy, consistent condensed tangent against finite differences of the condensed
+// force (the local solve of the enhanced parameters inside every evaluation), both materials and hypotheses, on
+// a distorted element under a strong non-affine deformation; closed-form kernel = general path; patch test and
+// rigid rotation.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -41,10 +41,10 @@ struct Case {
 
 class Q4EasIntegrator : public ::testing::TestWithParam<Case> {};
 
-// Tolerances: central differences with h = 1e-9 m on 2 mm elements have a truncation error ~ (h/size)^2 ~
-// 1e-12 and a round-off error ~ 1e-16 |f| / h * size ~ 1e-10 of the entries; 1e-6 of the norms leaves a wide
-// margin, while leaving out the condensation term K_ua K_aa^-1 K_au fails by orders of magnitude (measured:
-// 5-14 % of the norm of K at this deformation; with it 2e-11 to 1e-10).
+// Tolerances: central differences with h = 1e-9 m on 2 mm elements have a truncation error ~ (h/size)^2 ~ 1e-12
+// and a round-off error ~ 1e-16 |f| / h * size ~ 1e-10 of the entries; 1e-6 of the norms leaves a wide margin,
+// while leaving out the condensation term K_ua K_aa^-1 K_au fails by orders of magnitude (measured: 5-14 % of
+// the norm of K at this deformation; with it 2e-11 to 1e-10).
 TEST_P(Q4EasIntegrator, CondensedForceIsEnergyDerivativeAndTangentIsForceDerivative) {
   const auto [model, hyp, closed_form] = GetParam();
   auto m = hs::make_material(model, 10e6, 0.49);
@@ -114,8 +114,7 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{hs::MaterialModel::kStVenantKirchhoff, hs::PlaneHypothesis::kPlaneStrain, false},
                       Case{hs::MaterialModel::kStVenantKirchhoff, hs::PlaneHypothesis::kPlaneStress, false}));
 
-// The closed-form Neo-Hookean kernel against the general material path, strong and vibration-size (1e-5 of
-// it).
+// The closed-form Neo-Hookean kernel against the general material path, strong and vibration-size (1e-5 of it).
 TEST(Q4Eas, ClosedFormNeoHookeanEqualsGeneralPath) {
   auto m = hs::make_material(hs::MaterialModel::kNeoHookean, 10e6, 0.45);
   const auto x0 = distorted_reference();
@@ -135,8 +134,8 @@ TEST(Q4Eas, ClosedFormNeoHookeanEqualsGeneralPath) {
   }
 }
 
-// Patch test: an affine motion (strong: 20 % stretch, 30 % shear) of a distorted 2 x 2 patch. Every element
-// has a homogeneous F with alpha = 0 (the modes integrate to zero), so the interior node is in equilibrium.
+// Patch test: an affine motion (strong: 20 % stretch, 30 % shear) of a distorted 2 x 2 patch. Every element has
+// a homogeneous F with alpha = 0 (the modes integrate to zero), so the interior node is in equilibrium.
 TEST(Q4Eas, PatchTestAffineMotionOfDistortedPatch) {
   auto m = hs::make_material(hs::MaterialModel::kNeoHookean, 10e6, 0.49);
   hs::HyperelasticQ4Eas q4(*m, {hs::PlaneHypothesis::kPlaneStrain, true});

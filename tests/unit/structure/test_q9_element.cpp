@@ -90,8 +90,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{hs::MaterialModel::kStVenantKirchhoff, hs::PlaneHypothesis::kPlaneStress, false}));
 
 // The closed-form Neo-Hookean plane-strain kernel (the default path) against the general material path, at a
-// strong deformation and at a vibration-size one (strains ~1e-6, where round-off of the stress matters):
-// force and tangent agree to round-off, and the component-major tangent is the interleaved one reordered.
+// strong deformation and at a vibration-size one (strains ~1e-6, where round-off of the stress matters): force
+// and tangent agree to round-off, and the component-major tangent is the interleaved one reordered.
 TEST(Q9, ClosedFormNeoHookeanEqualsGeneralPath) {
   auto m = hs::make_material(hs::MaterialModel::kNeoHookean, 10e6, 0.49);
   const auto x0 = distorted_reference();

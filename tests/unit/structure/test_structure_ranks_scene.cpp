@@ -1,7 +1,7 @@
-// structure.ranks through the program: a plate in air solved on a communicator of two ranks (METIS halves of
-// the mesh, MUMPS) gives the probes of the same run with the structure on one rank; a rank count the run
-// cannot give, and more than one structure rank in a scene with water, are one clear error each (exit status
-// 2). Also the q4_eas element through the scene key.
+// structure.ranks through the program: a plate in air solved on a communicator of two ranks (METIS halves of the
+// mesh, MUMPS) gives the probes of the same run with the structure on one rank; a rank count the run cannot give,
+// and more than one structure rank in a scene with water, are one clear error each (exit status 2). Also the
+// q4_eas element through the scene key.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -42,8 +42,8 @@ TEST(StructureRanksScene, TwoStructureRanksGiveTheProbesOfOne) {
       EXPECT_NEAR(x[i], y[i], 1e-7 * scale) << name << " at row " << i;
   }
   EXPECT_GT(a.column("tip_x")[0], 0.1 * 0.08);  // a large deflection, not a trivial state
-  // Outputs are written once: the plate's field series holds one copy of the nodes on either rank count, and
-  // so does its checkpoint state.
+  // Outputs are written once: the plate's field series holds one copy of the nodes on either rank count, and so
+  // does its checkpoint state.
   EXPECT_EQ(test::read_text(one + "/fields/plate.xdmf"), test::read_text(two + "/fields/plate.xdmf"));
   const auto c1 = io::list_checkpoints(one + "/checkpoints"), c2 = io::list_checkpoints(two + "/checkpoints");
   ASSERT_EQ(c1.size(), 1u);
@@ -75,11 +75,11 @@ TEST(StructureRanksScene, CoupledScenesNeedOneStructureRank) {
       << err;
 }
 
-// structure.element: q4_eas through the program: the cable-bent plate of the scene on the paper's 2 x 60
-// layout with both elements. Tolerance 1 % of each probe's largest magnitude: the two discretisations differ
-// by their errors (small tip load: Q9 -0.40 %, Q4-EAS -0.67 % from beam theory; measured here 0.06 % on the
-// tip, 0.16 % on the strain energy). The maximum von Mises stress is sampled at different points (3x3 against
-// 2x2) and is not compared. An odd count across is one error.
+// structure.element: q4_eas through the program: the cable-bent plate of the scene on the paper's 2 x 60 layout
+// with both elements. Tolerance 1 % of each probe's largest magnitude: the two discretisations differ by their
+// errors (small tip load: Q9 -0.40 %, Q4-EAS -0.67 % from beam theory; measured here 0.06 % on the tip, 0.16 % on
+// the strain energy). The maximum von Mises stress is sampled at different points (3x3 against 2x2) and is not
+// compared. An odd count across is one error.
 TEST(StructureRanksScene, Q4EasElementGivesTheProbesOfQ9) {
   const std::string q9 = test::binary_path("structure_scene_q9"),
                     q4 = test::binary_path("structure_scene_q4_eas");
