@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <utility>
 
 #include "halfeti/core/error.hpp"
 #include "halfeti/core/version.hpp"
@@ -45,29 +46,23 @@ signal or --max-wall (resumable with --restart), 6 an output could not be writte
 }
 
 double parse_memory_size(const std::string& text, const char* option) {
+  static const std::pair<const char*, double> kUnits[] = {{"", 1.0},
+                                                          {"k", 1e3},
+                                                          {"K", 1e3},
+                                                          {"M", 1e6},
+                                                          {"G", 1e9},
+                                                          {"T", 1e12},
+                                                          {"Ki", 1024.0},
+                                                          {"Mi", 1024.0 * 1024.0},
+                                                          {"Gi", 1073741824.0},
+                                                          {"Ti", 1099511627776.0}};
   char* end = nullptr;
   const double number = std::strtod(text.c_str(), &end);
   std::string unit(end ? end : "");
   if (!unit.empty() && (unit.back() == 'B' || unit.back() == 'b')) unit.pop_back();
   double scale = 0.0;
-  if (unit.empty())
-    scale = 1.0;
-  else if (unit == "k" || unit == "K")
-    scale = 1e3;
-  else if (unit == "M")
-    scale = 1e6;
-  else if (unit == "G")
-    scale = 1e9;
-  else if (unit == "T")
-    scale = 1e12;
-  else if (unit == "Ki")
-    scale = 1024.0;
-  else if (unit == "Mi")
-    scale = 1024.0 * 1024.0;
-  else if (unit == "Gi")
-    scale = 1024.0 * 1024.0 * 1024.0;
-  else if (unit == "Ti")
-    scale = 1024.0 * 1024.0 * 1024.0 * 1024.0;
+  for (const auto& [name, factor] : kUnits)
+    if (unit == name) scale = factor;
   const double bytes = number * scale;
   if (end == text.c_str() || scale == 0.0 || !(bytes >= 1.0) || !std::isfinite(bytes))
     HALFETI_USER_ERROR(option << " takes a memory size such as 8G, 512M or 2GiB, got '" << text << "'");

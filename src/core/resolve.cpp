@@ -44,8 +44,7 @@ class Resolver {
     const std::size_t shown = std::min(errors_.size(), kMaxReported);
     for (std::size_t i = 0; i < shown; ++i) text += (i ? "\n" : "") + errors_[i].text;
     if (errors_.size() > shown)
-      text += "\n" + (origin_.file.empty() ? std::string("<scene>") : origin_.file) + ": " +
-              std::to_string(errors_.size() - shown) + " more errors not shown (" +
+      text += "\n" + file() + ": " + std::to_string(errors_.size() - shown) + " more errors not shown (" +
               std::to_string(errors_.size()) + " in all)";
     throw UserError(text);
   }
@@ -236,32 +235,34 @@ class Resolver {
     if (low || high) fail(v, path, "expected " + key.expectation() + ", found " + scalar_text(v));
   }
 
-  std::string where(const YAML::Node& node, const std::string& path) const {
-    for (const auto& [opath, text] : origin_.overrides) {
-      if (path == opath || path.rfind(opath + ".", 0) == 0 || path.rfind(opath + "[", 0) == 0)
-        return "--set " + opath + "=" + text;
+  // The --set override that set `path` (or a section above it), or null.
+  const std::pair<const std::string, std::string>* override_for(const std::string& path) const {
+    for (const auto& o : origin_.overrides) {
+      const std::string& opath = o.first;
+      if (path == opath || path.rfind(opath + ".", 0) == 0 || path.rfind(opath + "[", 0) == 0) return &o;
     }
-    std::ostringstream os;
-    os << (origin_.file.empty() ? "<scene>" : origin_.file);
-    if (node.IsDefined() && !node.Mark().is_null())
-      os << ":" << node.Mark().line + 1 << ":" << node.Mark().column + 1;
-    return os.str();
+    return nullptr;
   }
 
-  // Records one error: "<file>:<line>:<column>: <key path>: <what>" (or "--set key=value: ...").
+  // Records one error: "<file>:<line>:<column>: <key path>: <what>" (or "--set key=value: ..."), with its place
+  // for the order of the report (the overrides first, then by line and column, then those without a place).
   void record(const YAML::Node& node, const std::string& path, const std::string& msg) {
-    std::string text = msg;
-    if (msg.rfind("unknown key", 0) != 0) text = path + ": " + msg;
+    const std::string what = msg.rfind("unknown key", 0) == 0 ? msg : path + ": " + msg;
     Entry e;
-    e.text = where(node, path) + ": " + text;
-    if (e.text.rfind("--set ", 0) != 0 && node.IsDefined() && !node.Mark().is_null()) {
+    if (const auto* o = override_for(path)) {
+      e.text = "--set " + o->first + "=" + o->second + ": " + what;
+    } else if (node.IsDefined() && !node.Mark().is_null()) {
       e.line = node.Mark().line + 1;
       e.column = node.Mark().column + 1;
-    } else if (e.text.rfind("--set ", 0) != 0) {
-      e.line = std::numeric_limits<int>::max();  // no place in the text: after those that have one
+      e.text = file() + ":" + std::to_string(e.line) + ":" + std::to_string(e.column) + ": " + what;
+    } else {
+      e.line = std::numeric_limits<int>::max();
+      e.text = file() + ": " + what;
     }
     errors_.push_back(std::move(e));
   }
+
+  std::string file() const { return origin_.file.empty() ? "<scene>" : origin_.file; }
 
   // Records one error and unwinds to the key that holds the value.
   [[noreturn]] void fail(const YAML::Node& node, const std::string& path, const std::string& msg) {

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstring>
-#include <numeric>
 
 #include "halfeti/core/error.hpp"
 
@@ -23,23 +22,6 @@ void add_traffic(Traffic* t, std::int64_t messages, std::int64_t bytes, double w
   t->wait_seconds += wait;
 }
 }  // namespace
-
-std::vector<int> neighbour_ranks(int nx, int ny, const std::vector<int>& owner, int rank) {
-  std::vector<int> out;
-  for (int iy = 0; iy < ny; ++iy)
-    for (int ix = 0; ix < nx; ++ix) {
-      if (owner[iy * nx + ix] != rank) continue;
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int jx = ix + dx, jy = iy + dy;
-          if (jx < 0 || jy < 0 || jx >= nx || jy >= ny) continue;
-          const int r = owner[jy * nx + jx];
-          if (r != rank && std::find(out.begin(), out.end(), r) == out.end()) out.push_back(r);
-        }
-    }
-  std::sort(out.begin(), out.end());
-  return out;
-}
 
 void CommPlan::finish_layout(int keep) {
   keep_ = keep;
@@ -65,18 +47,15 @@ void CommPlan::finish_layout(int keep) {
   lay(recv_from_, keep_recv_offset_, recv_total_);
 }
 
-CommPlan CommPlan::with_peers(MPI_Comm comm, std::vector<int> peers, const std::vector<int>& send_counts,
-                              int keep, Traffic* traffic) {
+CommPlan CommPlan::with_peers(MPI_Comm comm, const std::vector<int>& peers,
+                              const std::vector<int>& send_counts, int keep, Traffic* traffic) {
   HALFETI_CHECK(peers.size() == send_counts.size(), "one send count per peer");
+  HALFETI_CHECK(std::is_sorted(peers.begin(), peers.end()), "peers in increasing rank");
   CommPlan p;
   p.comm_ = comm;
   p.traffic_ = traffic;
   MPI_Comm_rank(comm, &p.rank_);
   const std::size_t n = peers.size();
-  std::vector<std::size_t> by_rank(n);
-  std::iota(by_rank.begin(), by_rank.end(), std::size_t{0});
-  std::sort(by_rank.begin(), by_rank.end(),
-            [&](std::size_t a, std::size_t b) { return peers[a] < peers[b]; });
   std::vector<int> recv_counts(n, 0);
   std::vector<MPI_Request> req(2 * n);
   for (std::size_t k = 0; k < n; ++k) {
@@ -88,7 +67,7 @@ CommPlan CommPlan::with_peers(MPI_Comm comm, std::vector<int> peers, const std::
   MPI_Waitall(static_cast<int>(req.size()), req.data(), MPI_STATUSES_IGNORE);
   add_traffic(traffic, static_cast<std::int64_t>(n), static_cast<std::int64_t>(n * sizeof(int)),
               MPI_Wtime() - t0);
-  for (std::size_t k : by_rank) {
+  for (std::size_t k = 0; k < n; ++k) {
     if (send_counts[k] > 0) p.send_to_.push_back({peers[k], send_counts[k], 0});
     if (recv_counts[k] > 0) p.recv_from_.push_back({peers[k], recv_counts[k], 0});
   }

@@ -25,16 +25,10 @@ std::vector<int> partition_cells(const CellGrid& grid, const std::vector<long>& 
   // 8-neighbour cell graph in CSR form; edges are the cell pairs whose particles interact.
   std::vector<idx_t> xadj(n + 1, 0), adjncy;
   adjncy.reserve(static_cast<std::size_t>(n) * 8);
-  for (int iy = 0; iy < grid.ny; ++iy)
-    for (int ix = 0; ix < grid.nx; ++ix) {
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int jx = ix + dx, jy = iy + dy;
-          if ((dx == 0 && dy == 0) || jx < 0 || jy < 0 || jx >= grid.nx || jy >= grid.ny) continue;
-          adjncy.push_back(jy * grid.nx + jx);
-        }
-      xadj[iy * grid.nx + ix + 1] = static_cast<idx_t>(adjncy.size());
-    }
+  for (int c = 0; c < n; ++c) {
+    grid.for_each_neighbour(c, [&](int j) { adjncy.push_back(j); });
+    xadj[c + 1] = static_cast<idx_t>(adjncy.size());
+  }
   // Empty cells weigh a little so that METIS still places them sensibly (they fill as water moves).
   std::vector<idx_t> vwgt(n);
   for (int c = 0; c < n; ++c) vwgt[c] = static_cast<idx_t>(16 * cell_weights[c] + 1);

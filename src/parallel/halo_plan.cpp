@@ -4,12 +4,25 @@
 
 namespace halfeti::parallel {
 
+std::vector<int> neighbour_ranks(const CellGrid& grid, const std::vector<int>& owner, int rank) {
+  std::vector<int> out;
+  for (int c = 0; c < grid.cell_count(); ++c) {
+    if (owner[c] != rank) continue;
+    grid.for_each_neighbour(c, [&](int j) {
+      if (owner[j] != rank && std::find(out.begin(), out.end(), owner[j]) == out.end())
+        out.push_back(owner[j]);
+    });
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 HaloPlan::HaloPlan(MPI_Comm comm, const CellGrid& grid, const std::vector<int>& owner,
                    const std::vector<int>& cells)
     : HaloPlan(comm, grid, owner, cells, [&] {
         int rank = 0;
         MPI_Comm_rank(comm, &rank);
-        return neighbour_ranks(grid.nx, grid.ny, owner, rank);
+        return neighbour_ranks(grid, owner, rank);
       }()) {}
 
 HaloPlan::HaloPlan(MPI_Comm comm, const CellGrid& grid, const std::vector<int>& owner,
@@ -31,17 +44,12 @@ HaloPlan::HaloPlan(MPI_Comm comm, const CellGrid& grid, const std::vector<int>& 
     if (c != last_cell) {
       last_cell = c;
       ntargets = 0;
-      const int ix = c % grid.nx, iy = c / grid.nx;
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int jx = ix + dx, jy = iy + dy;
-          if (jx < 0 || jy < 0 || jx >= grid.nx || jy >= grid.ny) continue;
-          const int r = owner[jy * grid.nx + jx];
-          if (r == rank) continue;
-          const int k = static_cast<int>(std::lower_bound(peers.begin(), peers.end(), r) - peers.begin());
-          if (std::find(targets, targets + ntargets, k) != targets + ntargets) continue;
-          targets[ntargets++] = k;
-        }
+      grid.for_each_neighbour(c, [&](int j) {
+        const int r = owner[j];
+        if (r == rank) return;
+        const int k = static_cast<int>(std::lower_bound(peers.begin(), peers.end(), r) - peers.begin());
+        if (std::find(targets, targets + ntargets, k) == targets + ntargets) targets[ntargets++] = k;
+      });
     }
     for (int t = 0; t < ntargets; ++t) per_peer[targets[t]].push_back(static_cast<int>(i));
   }

@@ -122,12 +122,16 @@ void Fluid::initialise_particles() {
   distribute(std::move(all));
 }
 
+void Fluid::set_owner(std::vector<int> owner) {
+  owner_ = std::move(owner);
+  peers_ = parallel::neighbour_ranks(grid_, owner_, rank_);
+}
+
 void Fluid::distribute(ParticleArrays all) {
   const std::size_t n = all.gid.size();
   std::vector<long> counts(grid_.cell_count(), 0);
   for (std::size_t k = 0; k < n; ++k) ++counts[grid_.cell_of(all.x[k], all.y[k])];
-  owner_ = parallel::partition_cells_collective(comm_.get(), grid_, counts, params_.first_rank_share);
-  peers_ = parallel::neighbour_ranks(grid_.nx, grid_.ny, owner_, rank_);
+  set_owner(parallel::partition_cells_collective(comm_.get(), grid_, counts, params_.first_rank_share));
   gid_.clear();
   for (auto* v : {&x_, &y_, &vx_, &vy_, &rho_, &mass_}) v->clear();
   for (std::size_t k = 0; k < n; ++k) {
@@ -431,8 +435,7 @@ void Fluid::maybe_rebalance() {
   const auto counts = global_cell_counts();
   if (parallel::imbalance(owner_, counts, size_, params_.first_rank_share) <= params_.rebalance_threshold)
     return;
-  owner_ = parallel::partition_cells_collective(comm_.get(), grid_, counts, params_.first_rank_share);
-  peers_ = parallel::neighbour_ranks(grid_.nx, grid_.ny, owner_, rank_);
+  set_owner(parallel::partition_cells_collective(comm_.get(), grid_, counts, params_.first_rank_share));
 }
 
 void Fluid::migrate() {

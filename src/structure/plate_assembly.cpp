@@ -198,8 +198,8 @@ void PlateSolver::add_newton_system(Mat matrix, Vec rhs, PetscInt offset) {
   HALFETI_PETSC_CALL(MatGetBlockSize(matrix, &block_size));
   const bool blocked = block_size == 2 && offset % 2 == 0;
   const int nn = mesh_.nodes_per_element(), nd = 2 * nn;
-  double interleaved[2 * kQ9Nodes * 2 * kQ9Nodes];  // row-major nd x nd (the largest element's)
-  auto element_sink = [&](int e, const double* component_major) {  // column-major nd x nd, row 9 i + a
+  double interleaved[2 * kMaxElementNodes * 2 * kMaxElementNodes];  // row-major nd x nd
+  auto element_sink = [&](int e, const double* component_major) {   // column-major nd x nd, row 9 i + a
     const int* nodes = mesh_.element_nodes(e);
     for (int b = 0; b < nn; ++b)
       for (int a = 0; a < nn; ++a)
@@ -207,7 +207,7 @@ void PlateSolver::add_newton_system(Mat matrix, Vec rhs, PetscInt offset) {
           for (int k = 0; k < 2; ++k)
             interleaved[(2 * a + i) * nd + 2 * b + k] = component_major[(nn * k + b) * nd + nn * i + a];
     const double* values = interleaved;
-    PetscInt rows[2 * kQ9Nodes];
+    PetscInt rows[2 * kMaxElementNodes];
     // Negative indices make PETSc skip the clamped rows and columns.
     const auto& to_petsc = partition_.petsc_node;
     if (blocked) {

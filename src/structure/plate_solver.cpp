@@ -31,14 +31,18 @@ const StructureParameters& validated(const StructureParameters& p) {
   return p;
 }
 
-std::variant<Q9Family, Q4EasFamily> make_family(const Material& material, const PlateMaterialParameters& m,
-                                                const PlateMesh& mesh) {
+PlateElements make_family(const Material& material, const PlateMaterialParameters& m, const PlateMesh& mesh) {
   if (mesh.element_type == ElementType::kQ4Eas)
-    return std::variant<Q9Family, Q4EasFamily>(std::in_place_type<Q4EasFamily>, material,
-                                               Q4EasOptions{m.hypothesis}, mesh, m.density);
-  return std::variant<Q9Family, Q4EasFamily>(std::in_place_type<Q9Family>, material,
-                                             Q9Options{m.hypothesis, m.selective_reduced_integration}, mesh,
-                                             m.density);
+    return PlateElements(std::in_place_type<Q4EasFamily>, material, Q4EasOptions{m.hypothesis}, mesh,
+                         m.density);
+  return PlateElements(std::in_place_type<Q9Family>, material,
+                       Q9Options{m.hypothesis, m.selective_reduced_integration}, mesh, m.density);
+}
+
+// The length of the restart's element state (Q4-EAS: the enhanced parameters of every element; Q9: none).
+template <typename Family>
+std::size_t element_state_size(const Family& family) {
+  return static_cast<std::size_t>(family.count()) * Family::kStatePerElement;
 }
 }  // namespace
 
@@ -157,7 +161,7 @@ std::vector<double> PlateSolver::save_state() const {
   // zeros elsewhere is exact.
   std::vector<double> elements = with_family([&](const auto& family) {
     constexpr int k = std::decay_t<decltype(family)>::kStatePerElement;
-    std::vector<double> state(static_cast<std::size_t>(family.state_size()), 0.0);
+    std::vector<double> state(element_state_size(family), 0.0);
     if (k > 0)
       for (int e : partition_.owned_elements) family.save_state(e, &state[static_cast<std::size_t>(e) * k]);
     return state;
@@ -171,8 +175,7 @@ std::vector<double> PlateSolver::save_state() const {
 
 void PlateSolver::restore_state(const std::vector<double>& state) {
   const auto n = static_cast<std::size_t>(dof_count());
-  const auto element_state =
-      static_cast<std::size_t>(with_family([](const auto& f) { return f.state_size(); }));
+  const std::size_t element_state = with_family([](const auto& f) { return element_state_size(f); });
   if (state.size() != 3 * n + element_state)
     HALFETI_USER_ERROR("restart: the plate's state has "
                        << state.size() << " values, this scene's plate needs " << 3 * n + element_state);
@@ -200,9 +203,7 @@ std::string PlateSolver::summary() const {
      << mesh_.element_count() << " elements, " << dof_count() << " dofs), " << to_string(m.model)
      << " E = " << m.youngs_modulus << " Pa, nu = " << m.poisson_ratio << ", rho = " << m.density
      << " kg/m^3, " << to_string(m.hypothesis) << " per unit depth, "
-     << (g.element == ElementType::kQ4Eas  ? "2x2 (enhanced strain)"
-         : m.selective_reduced_integration ? "selective reduced"
-                                           : "full")
+     << with_family([](const auto& f) { return f.integration(); })
      << " integration, Newmark beta = " << params_.newmark.beta << " gamma = " << params_.newmark.gamma
      << ", ranks = " << size_;
   return os.str();
@@ -238,8 +239,8 @@ void PlateSolver::set_next_predictor(const Eigen::VectorXd& u) {
   HALFETI_CHECK(u.size() == dof_count(),
                 "plate predictor of " << u.size() << " values for " << dof_count() << " dofs");
   next_predictor_ = u;
-  for (int node = 0; node < node_count();
-       ++node)  // the clamped rows keep their prescribed (zero) displacement
+  // The clamped rows keep their prescribed (zero) displacement.
+  for (int node = 0; node < node_count(); ++node)
     if (clamped_[node]) next_predictor_.segment<2>(2 * node) = u_.segment<2>(2 * node);
 }
 

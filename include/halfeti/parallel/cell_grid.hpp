@@ -29,6 +29,17 @@ struct CellGrid {
   int ix(double x) const { return std::clamp(static_cast<int>(std::floor((x - x0) / size)), 0, nx - 1); }
   int iy(double y) const { return std::clamp(static_cast<int>(std::floor((y - y0) / size)), 0, ny - 1); }
   int cell_of(double x, double y) const { return iy(y) * nx + ix(x); }
+  // Calls f(j) for each of the (up to 8) cells around cell c inside the grid, row by row from below.
+  template <typename F>
+  void for_each_neighbour(int c, F&& f) const {
+    const int cx = c % nx, cy = c / nx;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int jx = cx + dx, jy = cy + dy;
+        if ((dx == 0 && dy == 0) || jx < 0 || jy < 0 || jx >= nx || jy >= ny) continue;
+        f(jy * nx + jx);
+      }
+  }
 };
 
 }  // namespace halfeti::parallel

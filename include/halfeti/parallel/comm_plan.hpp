@@ -25,11 +25,11 @@ class CommPlan {
  public:
   CommPlan() = default;
 
-  // Collective over `peers` (every rank that lists this one among its peers must be among this rank's): `peers`
-  // are the ranks this one may exchange with (never itself), `send_counts[k]` the items for peers[k], `keep` the
-  // items this rank sends to itself. The counts are swapped with the peers only.
-  static CommPlan with_peers(MPI_Comm comm, std::vector<int> peers, const std::vector<int>& send_counts,
-                             int keep, Traffic* traffic);
+  // Collective over `peers` (every rank that lists this one among its peers must be among this rank's):
+  // `peers` are the ranks this one may exchange with (never itself), in increasing order, `send_counts[k]` the
+  // items for peers[k], `keep` the items this rank sends to itself. The counts are swapped with the peers only.
+  static CommPlan with_peers(MPI_Comm comm, const std::vector<int>& peers,
+                             const std::vector<int>& send_counts, int keep, Traffic* traffic);
   // Collective over `comm`, but with messages to the destinations only: `send_counts[r]` items for rank r (the own
   // rank's entry is what it keeps). The sources are found by the non-blocking consensus of Hoefler, Siebert &
   // Lumsdaine (2010, "Scalable communication protocols for dynamic sparse data exchange", PPoPP): synchronous
@@ -61,9 +61,5 @@ class CommPlan {
   int send_total_ = 0, recv_total_ = 0;
   Traffic* traffic_ = nullptr;
 };
-
-// The ranks other than `rank` that own a cell among the 8 around a cell `rank` owns: whom its halo talks to. The
-// relation is symmetric, so it serves CommPlan::with_peers.
-std::vector<int> neighbour_ranks(int nx, int ny, const std::vector<int>& owner, int rank);
 
 }  // namespace halfeti::parallel

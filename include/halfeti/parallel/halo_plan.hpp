@@ -14,6 +14,10 @@
 
 namespace halfeti::parallel {
 
+// The ranks other than `rank` that own a cell among the 8 around a cell `rank` owns: whom its halo talks to. The
+// relation is symmetric, so it serves CommPlan::with_peers. In increasing rank.
+std::vector<int> neighbour_ranks(const CellGrid& grid, const std::vector<int>& owner, int rank);
+
 class HaloPlan {
  public:
   HaloPlan() = default;

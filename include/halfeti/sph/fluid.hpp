@@ -144,6 +144,8 @@ class Fluid {
   void initialise_particles();
   // Partitions the cells by their counts of `all` and keeps this rank's particles, in (cell, gid) order.
   void distribute(ParticleArrays all);
+  // The cell -> rank map, and the halo peers it gives (kept together).
+  void set_owner(std::vector<int> owner);
   bool excluded(double px, double py) const;
   bool near_internal_wall(double x, double y) const;
   void sort_owned_by_cell();

@@ -14,12 +14,15 @@
 //   cauchy_at_points(e, u)                           Cauchy stress (Voigt 11, 22, 12, 33) at the integration points
 //   centre(e, position)                              a point of the element, for messages
 //   apply_increment(e, du_e)                         the element state after a Newton increment (component-major)
-//   reset_state(), state_size(), save_state(e, out), restore_state(e, in)   a restart's element state
+//   integration()                                    the integration's name, for the run log
+//   kStatePerElement, reset_state(), save_state(e, out), restore_state(e, in)   a restart's element state
 // Every method throws NumericalError where the element does (an inverted point).
 #pragma once
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <array>
+#include <variant>
 #include <vector>
 
 #include "halfeti/structure/material.hpp"
@@ -57,7 +60,9 @@ class Q9Family {
   }
   void apply_increment(int, const Eigen::Matrix<double, 2 * kNodes, 1>&) {}  // no element state
   void reset_state() {}
-  int state_size() const { return 0; }
+  const char* integration() const {
+    return integrator_.options().selective_reduced_integration ? "selective reduced" : "full";
+  }
   void save_state(int, double*) const {}
   void restore_state(int, const double*) {}
   static constexpr int kStatePerElement = 0;
@@ -102,7 +107,7 @@ class Q4EasFamily {
   }
   void apply_increment(int e, const Eigen::Matrix<double, 2 * kNodes, 1>& du);
   void reset_state();
-  int state_size() const { return count() * kEasModes; }
+  const char* integration() const { return "2x2 (enhanced strain)"; }
   void save_state(int e, double* out) const;
   void restore_state(int e, const double* in);
 
@@ -114,5 +119,10 @@ class Q4EasFamily {
   std::vector<EasParameters> alpha_, alpha_solved_;
   std::vector<EasUpdate> alpha_update_;
 };
+
+// The plate's elements: one family, chosen by the mesh's element type.
+using PlateElements = std::variant<Q9Family, Q4EasFamily>;
+// Nodes of the largest element (buffers sized once for any family).
+constexpr int kMaxElementNodes = std::max(Q9Family::kNodes, Q4EasFamily::kNodes);
 
 }  // namespace halfeti::structure

@@ -218,7 +218,7 @@ class PlateSolver {
   PlateMesh mesh_;
   std::unique_ptr<Material> material_;
   // The solid elements (element_family.hpp): geometry, mass and element state of the mesh's element type.
-  std::variant<Q9Family, Q4EasFamily> family_;
+  PlateElements family_;
   Newmark newmark_;
   Eigen::VectorXd mass_row_sum_;  // per node, for body forces
   std::vector<bool> clamped_;

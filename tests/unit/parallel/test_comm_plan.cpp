@@ -70,7 +70,7 @@ TEST(CommPlan, HaloTalksToNeighbourRanksOnly) {
   const CellGrid grid = CellGrid::covering(0.0, 0.0, 4.0 * size, 1.0, 0.25);
   std::vector<int> owner(grid.cell_count());
   for (int c = 0; c < grid.cell_count(); ++c) owner[c] = (c % grid.nx) * size / grid.nx;
-  const std::vector<int> peers = neighbour_ranks(grid.nx, grid.ny, owner, rank);
+  const std::vector<int> peers = neighbour_ranks(grid, owner, rank);
   std::vector<int> expected_peers;
   if (rank > 0) expected_peers.push_back(rank - 1);
   if (rank + 1 < size) expected_peers.push_back(rank + 1);
