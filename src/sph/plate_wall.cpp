@@ -197,17 +197,23 @@ void PlateWall::set_outline(const PlateOutline& true_outline, double dx, double 
     ny = -(x1 - x0) / l;
     seg = right ? k : n - 2 - k;
   };
-  // Rows every dx down the plate from the top corners, (j + 1/2) dx below them, as the water lattice's rows: body
-  // ghosts across the thickness and band ghosts (m + 1/2) dx beyond each face, each standing for one lattice cell.
+  // Rows down the plate from the top corners, as the water lattice's rows: body ghosts across the thickness and band
+  // ghosts (m + 1/2) dx beyond each face, each standing for one lattice cell. Each face is cut into the same number
+  // of rows, about one spacing tall each (the faces' mean length over dx), so that the rows reach the foot on both
+  // faces however the plate bends: the face on the inside of a bend is shorter than the one outside, and rows a
+  // fixed dx apart, as many as the shorter face holds, left a strip up to a spacing tall at the foot with no ghosts,
+  // a hole in the kernel of the water in the corner with the floor into which the particles there were pushed and
+  // piled up until one was shot through the floor (docs/coupling.md, section 17).
   const int bands = static_cast<int>(std::ceil(support / dx - 0.5)) + 1;
-  const double length = std::min(arc_[0], arc_[n - 1]);
-  for (int j = 0; (j + 0.5) * dx < length; ++j) {
+  const int rows = std::max(1, static_cast<int>(std::lround(0.5 * (arc_[0] + arc_[n - 1]) / dx)));
+  row_height_[0] = arc_[0] / rows;      // the right face's
+  row_height_[1] = arc_[n - 1] / rows;  // the left face's
+  for (int j = 0; j < rows; ++j) {
     row_start_.push_back(static_cast<int>(gx_.size()));
-    const double s = (j + 0.5) * dx;
     double rx, ry, nrx, nry, lx, ly, nlx, nly;
     int seg, unused;
-    at(true, s, rx, ry, nrx, nry, seg);
-    at(false, s, lx, ly, nlx, nly, unused);
+    at(true, (j + 0.5) * row_height_[0], rx, ry, nrx, nry, seg);
+    at(false, (j + 0.5) * row_height_[1], lx, ly, nlx, nly, unused);
     auto add = [&](double gx, double gy, double vol, Region region) {
       gx_.push_back(gx);
       gy_.push_back(gy);
@@ -217,13 +223,14 @@ void PlateWall::set_outline(const PlateOutline& true_outline, double dx, double 
     };
     const double width = std::hypot(rx - lx, ry - ly);
     const int nb = std::max(1, static_cast<int>(std::lround(width / dx)));
+    const double height = 0.5 * (row_height_[0] + row_height_[1]);
     for (int m = 0; m < nb; ++m) {  // the solid, across its thickness
       const double f = (m + 0.5) / nb;
-      add(lx + f * (rx - lx), ly + f * (ry - ly), width / nb * dx, kBody);
+      add(lx + f * (rx - lx), ly + f * (ry - ly), width / nb * height, kBody);
     }
     for (int m = 0; m < bands; ++m) {  // the water lattice continued beyond each face
-      add(rx + (m + 0.5) * dx * nrx, ry + (m + 0.5) * dx * nry, dx * dx, kRightBand);
-      add(lx + (m + 0.5) * dx * nlx, ly + (m + 0.5) * dx * nly, dx * dx, kLeftBand);
+      add(rx + (m + 0.5) * dx * nrx, ry + (m + 0.5) * dx * nry, dx * row_height_[0], kRightBand);
+      add(lx + (m + 0.5) * dx * nlx, ly + (m + 0.5) * dx * nly, dx * row_height_[1], kLeftBand);
     }
   }
   row_start_.push_back(static_cast<int>(gx_.size()));
@@ -247,7 +254,7 @@ void PlateWall::set_outline(const PlateOutline& true_outline, double dx, double 
   }
   run_start_.push_back(n - 1);
   dx_ = dx;
-  row_window_ = static_cast<int>(std::ceil(support / dx)) + 1;
+  row_window_ = static_cast<int>(std::ceil(support / std::min(row_height_[0], row_height_[1]))) + 1;
   // Segments a particle's support can reach on either side of its own (segments are at least `shortest` long).
   fibre_window_ = static_cast<int>(std::ceil(support / shortest)) + 2;
 }
@@ -346,7 +353,8 @@ void PlateWall::find_pairs(const double* x, const double* y, int n, const Kernel
     const double arc = best < right_end_     ? arc_[best] - best_eta * l
                        : best >= left_start_ ? arc_[best] + best_eta * l
                                              : 0.0;
-    const int row = static_cast<int>(arc / dx_), rows = static_cast<int>(row_start_.size()) - 1;
+    const double row_height = best < right_end_ ? row_height_[0] : row_height_[1];
+    const int row = static_cast<int>(arc / row_height), rows = static_cast<int>(row_start_.size()) - 1;
     const std::size_t before = ghost_.size();
     const int lo = std::clamp(row - row_window_, 0, rows), hi = std::clamp(row + row_window_ + 1, 0, rows);
     for (int g = row_start_[lo]; g < row_start_[hi]; ++g) {

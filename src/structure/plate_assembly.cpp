@@ -199,7 +199,7 @@ void PlateSolver::add_newton_system(Mat matrix, Vec rhs, PetscInt offset) {
   const bool blocked = block_size == 2 && offset % 2 == 0;
   const int nn = mesh_.nodes_per_element(), nd = 2 * nn;
   double interleaved[2 * kMaxElementNodes * 2 * kMaxElementNodes];  // row-major nd x nd
-  auto element_sink = [&](int e, const double* component_major) {   // column-major nd x nd, row 9 i + a
+  auto element_sink = [&](int e, const double* component_major) {   // column-major nd x nd, row nn i + a
     const int* nodes = mesh_.element_nodes(e);
     for (int b = 0; b < nn; ++b)
       for (int a = 0; a < nn; ++a)

@@ -45,8 +45,9 @@ struct PlateWallConstants {
   double body_x = 0.0, body_y = 0.0;
 };
 
-// Ghost lattice (docs/coupling.md, section 12): the plate (its outline runs up the right face, across the top and
-// down the left face) is cut into rows one lattice spacing apart, measured down both faces from the top corners. Each
+// Ghost lattice (docs/coupling.md, sections 12 and 17): the plate (its outline runs up the right face, across the top
+// and down the left face) is cut into rows about one lattice spacing tall, measured down both faces from the top
+// corners, as many on each face (so that they reach its foot however the plate bends). Each
 // row holds body ghosts filling the plate's thickness and band ghosts continuing the water's lattice (m + 1/2) dx
 // beyond each face. A particle uses every body ghost in its support and
 // a band ghost only when the plate hides it (the segment between them crosses the plate's mid-line): the ghosts
@@ -85,6 +86,7 @@ class PlateWall {
   double ghost_x(int g) const { return gx_[g]; }
   double ghost_y(int g) const { return gy_[g]; }
   double ghost_volume(int g) const { return gvol_[g]; }
+  bool ghost_in_solid(int g) const { return gregion_[static_cast<std::size_t>(g)] == kBody; }
 
  private:
   enum Region : int { kBody = 0, kRightBand = 1, kLeftBand = 2 };
@@ -97,6 +99,7 @@ class PlateWall {
       left_start_ = 0;  // outline points [0, right_end_] up the right face, [left_start_, n) down the left
   int fibres_ = 0, fibre_window_ = 0, row_window_ = 0;
   double dx_ = 0.0;
+  double row_height_[2] = {0.0, 0.0};  // the rows' height along the right and the left face
   std::vector<double> mid_x_, mid_y_;  // mid-line points, base to top (fibres_ + 1)
   std::vector<double> mid_box_;        // and its segments' boxes (x0, y0, x1, y1)
   std::vector<int> run_start_;         // runs of 8 outline segments [run_start_[r], run_start_[r + 1])

@@ -193,5 +193,40 @@ TEST(PlateWallOffsets, ABentPlatesTopSlidesAlongItsFaces) {
   EXPECT_GT(wall.ghost_count(), 0u);
 }
 
+TEST(PlateWallRows, ReachTheFootOfBothFacesOfABentPlate) {
+  // The paper's plate (79.5 mm as the lattice sees it, 53 dx; 3 mm thick) bent into a circular arc that turns its top
+  // by 0.8 rad to the right: the right face (inside the bend) is 1.2 mm shorter than the mid-line (52.2 dx), the
+  // left 1.2 mm longer (54.6 dx). The ghosts must stand for the whole solid down to the clamp on both faces: the
+  // solid's ghost volume is the plate's area L t (an annular sector's area theta R t), and the lowest solid ghost
+  // sits half a row above the foot. (Rows a fixed dx apart, as many as the shorter face holds, stopped 52 rows down
+  // and left a strip 0.7 dx tall at the foot of the inner face and 3.1 dx at the outer one without ghosts.)
+  constexpr double kLength = 0.0795, kThick = 0.003, kTurn = 0.8, kR = kLength / kTurn;
+  PlateOutline o;
+  auto add = [&](double s, double side) {  // side +1: the right face, -1: the left, at arc length s of the mid-line
+    const double phi = s / kR;
+    o.x.push_back(0.15 + kR * (1.0 - std::cos(phi)) + side * 0.5 * kThick * std::cos(phi));
+    o.y.push_back(kR * std::sin(phi) - side * 0.5 * kThick * std::sin(phi));
+  };
+  for (int k = 0; k <= 120; ++k) add(kLength * k / 120.0, 1.0);
+  for (int j = 1; j <= 3; ++j) add(kLength, 1.0 - 2.0 * j / 4.0);  // across the top
+  for (int k = 120; k >= 0; --k) add(kLength * k / 120.0, -1.0);
+  for (auto* v : {&o.vx, &o.vy, &o.ax, &o.ay}) v->assign(o.size(), 0.0);
+  PlateWall wall;
+  const Kernel kernel{KernelKind::kCubicSpline, 1.33 * kDx, 1.0};
+  wall.set_outline(o, kDx, kernel.support());
+  double solid = 0.0, lowest = 1.0;
+  for (int g = 0; g < static_cast<int>(wall.ghost_count()); ++g)
+    if (wall.ghost_in_solid(g)) {
+      solid += wall.ghost_volume(g);
+      lowest = std::min(lowest, wall.ghost_y(g));
+    }
+  // The body ghosts are quadrature points of the plate's area: the chords of the 120-segment faces and the rows'
+  // straight cuts across a bent plate differ from the arc's area by less than 1e-3 of it.
+  EXPECT_NEAR(solid, kLength * kThick, 1e-3 * kLength * kThick);
+  // 53 rows down faces of 52.2 and 54.6 dx: the foot row's points half a row (0.49 and 0.52 dx) above the clamp,
+  // its ghosts between them, so no higher than 0.52 dx.
+  EXPECT_LT(lowest, 0.53 * kDx) << "the lowest solid ghost is " << lowest / kDx << " dx above the floor";
+}
+
 }  // namespace
 }  // namespace halfeti::sph

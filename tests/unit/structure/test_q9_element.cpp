@@ -129,7 +129,8 @@ TEST(Q9, MassIntegratesDensityTimesArea) {
 }
 
 TEST(Q9, RigidRotationIsStressFree) {
-  auto m = hs::make_material(hs::MaterialModel::kNeoHookean, 10e6, 0.45);
+  const double youngs_modulus = 10e6;  // Pa
+  auto m = hs::make_material(hs::MaterialModel::kNeoHookean, youngs_modulus, 0.45);
   hs::HyperelasticQ9 q9(*m, {});
   const auto x0 = distorted_reference();
   const auto g = hs::HyperelasticQ9::reference_geometry(x0);
@@ -143,7 +144,7 @@ TEST(Q9, RigidRotationIsStressFree) {
   // Round-off only: the force scale is E times the element's side (10 MPa x 2 mm = 2e4 N/m), and the motion (a
   // 22 mm translation of a 2 mm element) loses about a digit in the displacement gradient; 1e-12 of the scale
   // (~5000 machine epsilons) holds under every optimisation level (1.05e-9 N/m measured at -O1, below 1e-9 at -O3).
-  const double force_scale = 10e6 * 2.0e-3;
+  const double force_scale = youngs_modulus * 2.0e-3;  // the element's side: 2 mm
   EXPECT_NEAR(f.norm(), 0.0, 1e-12 * force_scale);
 }
 
