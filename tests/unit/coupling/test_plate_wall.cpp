@@ -202,7 +202,8 @@ TEST(PlateWallRows, ReachTheFootOfBothFacesOfABentPlate) {
   // and left a strip 0.7 dx tall at the foot of the inner face and 3.1 dx at the outer one without ghosts.)
   constexpr double kLength = 0.0795, kThick = 0.003, kTurn = 0.8, kR = kLength / kTurn;
   PlateOutline o;
-  auto add = [&](double s, double side) {  // side +1: the right face, -1: the left, at arc length s of the mid-line
+  auto add = [&](double s,
+                 double side) {  // side +1: the right face, -1: the left, at arc length s of the mid-line
     const double phi = s / kR;
     o.x.push_back(0.15 + kR * (1.0 - std::cos(phi)) + side * 0.5 * kThick * std::cos(phi));
     o.y.push_back(kR * std::sin(phi) - side * 0.5 * kThick * std::sin(phi));
