@@ -7,8 +7,11 @@
 // acoustic added mass and contact) equals the change of its strain, kinetic and gravitational energy: the work is
 // summed as the rule's own discrete identity, so only the Newton tolerance is left; 1 % of the peak strain energy
 // (measured: 0.05 % at L/40 and 0.04 % at L/60).
-// A second run with the former contact (the paper's SSOSD relocation and normal_stop, docs/coupling.md section
-// 15) shows the late-phase check can fail: its plate stays bent above the band.
+// (A second run with the former contact, the paper's SSOSD relocation and normal_stop, used to show that the
+// late-phase check can fail: its plate stayed bent above the band. Since the plate-wall rows reach a bent plate's
+// foot (docs/coupling.md, section 17) it reads 19.4 mm at 0.45 s, inside the band, and no longer shows that; it is
+// not run. With the explicit exchange the scene itself now reads 22.6 mm there, 2.6 mm above the band: the check
+// fails, reported as an open finding of the coupling issue, not loosened.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -70,25 +73,8 @@ void expect_published_tip_and_closed_balance(const std::string& out, const std::
 }  // namespace
 
 TEST(DambreakPlate, TipFollowsThePublishedResultsAndTheEnergyBalanceCloses) {
-  const std::string scene = test::source_path("inputs/validation/dambreak_plate.yaml");
   const std::string out = test::binary_path("validation_dambreak_plate");
   expect_published_tip_and_closed_balance(out, "");
-
-  // The former contact: the same check must be able to fail.
-  const std::string former = out + "_former_contact";
-  ASSERT_EQ(test::run_scene(
-                scene, former,
-                "--set scene.end_time=0.46 --set output.field_interval=0 --set coupling.ssosd.enabled=true "
-                "--set coupling.velocity_update=normal_stop --set structure.newmark_gamma=0.7 "
-                "--set structure.newmark_beta=0.36",
-                2),
-            0)
-      << test::read_text(former + ".stderr");
-  const auto fp = io::read_probe_csv(former + "/probes.csv");
-  const double former_late = test::interpolate(fp.column("t"), fp.column("tip_x"), 0.45);
-  std::printf("dambreak_plate with the former contact (SSOSD, normal_stop): tip at 0.45 s %.2f mm\n",
-              1e3 * former_late);
-  EXPECT_GT(former_late, kLateHigh + kTolerance);
 }
 
 // The same benchmark with the plate-water exchange converged within each step (docs/coupling.md, section 16): no
