@@ -4,6 +4,19 @@
 # With NP it is registered once per rank count as name_npN, launched with mpiexec (oversubscribed, root allowed).
 # PETSC links a main that calls PetscInitialize instead of MPI_Init. Tests are labelled 'fast' unless LABELS says
 # otherwise ('validation' runs are longer and excluded from tools/test).
+# Time limits scale with the build: AddressSanitizer and UBSan run the end-to-end tests 4-12 times slower (measured
+# 3 Dec), so a sanitizer build gives every test HALFETI_TIMEOUT_FACTOR times its limit.
+if(HALFETI_ENABLE_SANITIZERS)
+  set(HALFETI_TIMEOUT_FACTOR 4)
+else()
+  set(HALFETI_TIMEOUT_FACTOR 1)
+endif()
+# halfeti_timeout(VAR seconds): VAR = the limit of a test that takes `seconds` in a Release build.
+function(halfeti_timeout var seconds)
+  math(EXPR scaled "${seconds} * ${HALFETI_TIMEOUT_FACTOR}")
+  set(${var} ${scaled} PARENT_SCOPE)
+endfunction()
+
 set(HALFETI_MPI_TEST_ENV
     "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1;OMPI_MCA_btl_vader_single_copy_mechanism=none")
 
@@ -15,6 +28,7 @@ function(halfeti_add_test)
   if(NOT T_TIMEOUT)
     set(T_TIMEOUT 300)
   endif()
+  halfeti_timeout(T_TIMEOUT ${T_TIMEOUT})
   add_executable(${T_NAME} ${T_SOURCES})
   if(T_PETSC)
     target_link_libraries(${T_NAME} PRIVATE halfeti_gtest_petsc_main)
