@@ -199,11 +199,9 @@ void PlateWall::set_outline(const PlateOutline& true_outline, double dx, double 
   };
   // Rows down the plate from the top corners, as the water lattice's rows: body ghosts across the thickness and band
   // ghosts (m + 1/2) dx beyond each face, each standing for one lattice cell. Each face is cut into the same number
-  // of rows, about one spacing tall each (the faces' mean length over dx), so that the rows reach the foot on both
-  // faces however the plate bends: the face on the inside of a bend is shorter than the one outside, and rows a
-  // fixed dx apart, as many as the shorter face holds, left a strip up to a spacing tall at the foot with no ghosts,
-  // a hole in the kernel of the water in the corner with the floor into which the particles there were pushed and
-  // piled up until one was shot through the floor (docs/coupling.md, section 17).
+  // of rows, about one spacing tall (the faces' mean length over dx), so that the rows reach the foot of both faces
+  // however the plate bends (rows a fixed dx apart left a bent plate's foot without ghosts: docs/coupling.md,
+  // section 17).
   const int bands = static_cast<int>(std::ceil(support / dx - 0.5)) + 1;
   const int rows = std::max(1, static_cast<int>(std::lround(0.5 * (arc_[0] + arc_[n - 1]) / dx)));
   row_height_[0] = arc_[0] / rows;      // the right face's

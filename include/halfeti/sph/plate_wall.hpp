@@ -86,7 +86,7 @@ class PlateWall {
   double ghost_x(int g) const { return gx_[g]; }
   double ghost_y(int g) const { return gy_[g]; }
   double ghost_volume(int g) const { return gvol_[g]; }
-  bool ghost_in_solid(int g) const { return gregion_[static_cast<std::size_t>(g)] == kBody; }
+  bool ghost_in_solid(int g) const { return gregion_[g] == kBody; }
 
  private:
   enum Region : int { kBody = 0, kRightBand = 1, kLeftBand = 2 };

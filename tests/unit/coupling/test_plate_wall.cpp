@@ -198,8 +198,8 @@ TEST(PlateWallRows, ReachTheFootOfBothFacesOfABentPlate) {
   // by 0.8 rad to the right: the right face (inside the bend) is 1.2 mm shorter than the mid-line (52.2 dx), the
   // left 1.2 mm longer (54.6 dx). The ghosts must stand for the whole solid down to the clamp on both faces: the
   // solid's ghost volume is the plate's area L t (an annular sector's area theta R t), and the lowest solid ghost
-  // sits half a row above the foot. (Rows a fixed dx apart, as many as the shorter face holds, stopped 52 rows down
-  // and left a strip 0.7 dx tall at the foot of the inner face and 3.1 dx at the outer one without ghosts.)
+  // sits half a row above the foot. (Rows a fixed dx apart, as many as the shorter face holds, stopped 52 rows down:
+  // their lowest points 0.7 dx above the inner face's foot and 3.1 dx above the outer one's.)
   constexpr double kLength = 0.0795, kThick = 0.003, kTurn = 0.8, kR = kLength / kTurn;
   PlateOutline o;
   auto add = [&](double s,
