@@ -261,7 +261,9 @@ void Fluid::compute_forces() {
                         params_.kinematic_viscosity, rates_.ax.data(), rates_.ay.data());
     if (!plate_wall_.empty()) {  // the plate's surface as a moving wall (plate_wall.hpp)
       plate_wall_.find_pairs(x_.data(), y_.data(), n_owned_, kernel_);
-      const PlateWallConstants pk{dx_, kernel_.h, k.rho0, c0_, k.alpha, k.body_x, k.body_y};
+      PlateWallConstants pk{dx_, kernel_.h, k.rho0, c0_, k.alpha, k.body_x, k.body_y};
+      pk.wall_amplitude = k.wall_amplitude;  // the tank walls' repulsion on the faces too
+      pk.wall_range = k.wall_range;
       plate_wall_.momentum(vx_.data(), vy_.data(), rho_.data(), p_.data(), mass_.data(), gid_.data(), pk,
                            rates_.ax.data(), rates_.ay.data());
     }

@@ -9,6 +9,7 @@
 
 #include "halfeti/core/error.hpp"
 #include "halfeti/sph/neighbour_list.hpp"
+#include "halfeti/sph/walls.hpp"
 
 namespace halfeti::sph {
 
@@ -323,6 +324,7 @@ void PlateWall::find_pairs(const double* x, const double* y, int n, const Kernel
   nx_.clear();
   ny_.clear();
   eta_.clear();
+  distance_.clear();
   seg_.clear();
   start_.push_back(0);
   if (empty()) return;
@@ -374,6 +376,7 @@ void PlateWall::find_pairs(const double* x, const double* y, int n, const Kernel
     ny_.push_back(on_surface ? -tx / l : (yi - cy) / best_d);
     seg_.push_back(best);
     eta_.push_back(best_eta);
+    distance_.push_back(best_d);
   }
 }
 
@@ -403,6 +406,15 @@ void PlateWall::momentum(const double* vx, const double* vy, const double* rho, 
       sx += scalar * ex;
       sy += scalar * ey;
     }
+    // The face's repulsion, as the tank walls' (fluid_rates.cpp) over a continuous wall (the Monaghan & Kos profile
+    // along a wall sums to one): so that water reaching the plate's foot meets the same corner as at the tank's
+    // corners. Without it the contact put every particle that reached a face exactly on it, and at the foot, where
+    // the floor's repulsion holds the height, particles landed on one point and never parted (docs/coupling.md,
+    // section 18).
+    const double push = monaghan_kos_repulsion(std::max(distance_[a], 1e-12 * k.dx), 0.0, 1.0, k.wall_range,
+                                               k.wall_amplitude);
+    sx += push * nx;
+    sy += push * ny;
     ax[i] += sx;
     ay[i] += sy;
     // The plate gets the opposite force at the particle's closest point, shared by the segment's two points as a

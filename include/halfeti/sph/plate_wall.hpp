@@ -43,6 +43,8 @@ struct LatticeOffsets {
 struct PlateWallConstants {
   double dx = 0.0, h = 0.0, rho0 = 0.0, c0 = 0.0, alpha = 0.0;
   double body_x = 0.0, body_y = 0.0;
+  // The tank walls' Monaghan & Kos (1999) repulsion, on the faces as on the walls: amplitude (m/s^2) and range (m)
+  double wall_amplitude = 0.0, wall_range = 0.0;
 };
 
 // Ghost lattice (docs/coupling.md, sections 12 and 17): the plate (its outline runs up the right face, across the top
@@ -70,7 +72,8 @@ class PlateWall {
   const PlateOutline& outline() const { return outline_; }
   // Ghost pairs of the owned particles [0, n) (positions x, y).
   void find_pairs(const double* x, const double* y, int n, const Kernel& kernel);
-  // eq. 4 pressure and viscous terms over the ghosts: adds to ax, ay (per owned particle) and records the loads.
+  // eq. 4 pressure and viscous terms over the ghosts, and the walls' short-range repulsion within k.wall_range of a
+  // face: adds to ax, ay (per owned particle) and records the loads (the plate takes the opposite of both).
   void momentum(const double* vx, const double* vy, const double* rho, const double* p, const double* mass,
                 const std::int64_t* gid, const PlateWallConstants& k, double* ax, double* ay);
   // eq. 3 first term over the ghosts (velocity mirrored about the wall): adds to drho.
@@ -110,10 +113,10 @@ class PlateWall {
   // beside it; row_start_ indexes the rows.
   std::vector<double> gx_, gy_, gvol_;
   std::vector<int> gregion_, gfibre_, row_start_;
-  // Per particle with ghosts: its index, its pairs [start, start+count), its wall normal, closest segment and
-  // the parameter of its closest point on it (where the load goes).
+  // Per particle with ghosts: its index, its pairs [start, start+count), its wall normal, closest segment, the
+  // parameter of its closest point on it (where the load goes) and its distance from it.
   std::vector<int> particle_, start_, ghost_, seg_;
-  std::vector<double> ex_, ey_, f_, nx_, ny_, eta_;
+  std::vector<double> ex_, ey_, f_, nx_, ny_, eta_, distance_;
   std::vector<PlateWallLoad> loads_;
 
   bool hidden(double xi, double yi, double xg, double yg, int fibre) const;

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "halfeti/sph/kernel.hpp"
@@ -227,6 +228,54 @@ TEST(PlateWallRows, ReachTheFootOfBothFacesOfABentPlate) {
   // 53 rows down faces of 52.2 and 54.6 dx: the foot row's points half a row (0.49 and 0.52 dx) above the clamp,
   // its ghosts between them, so no higher than 0.52 dx.
   EXPECT_LT(lowest, 0.53 * kDx) << "the lowest solid ghost is " << lowest / kDx << " dx above the floor";
+}
+
+TEST(PlateWallRepulsion, AsTheTankWallsWithinHalfASpacingOfAFaceAndTheOppositeOnThePlate) {
+  // Water in still state (p = 0, at rest, no body force) so that only the faces' repulsion acts: a particle within
+  // dx/2 of a face must get the tank walls' Monaghan & Kos push A (1 - q) / sqrt(q), q = d / (dx/2), along the
+  // normal from its closest point (walls.cpp's profile summed along a continuous wall is one), none from dx/2 on,
+  // and the plate the opposite force, shared by the segment's two points. Beside the right face, above the top and
+  // at the foot's corner with the floor (pushed out of the face, not into the floor).
+  const PlateOutline o = paper_outline(0.0795);
+  PlateWall wall;
+  const Kernel kernel{KernelKind::kCubicSpline, 1.33 * kDx, 1.0};
+  wall.set_outline(o, kDx, kernel.support());
+  PlateWallConstants k;
+  k.dx = kDx;
+  k.h = kernel.h;
+  k.rho0 = 1000.0;
+  k.c0 = 20.0;
+  k.wall_amplitude = 0.01 * k.c0 * k.c0 / k.h;
+  k.wall_range = 0.5 * kDx;
+  struct Case {
+    double x, y, nx, ny, d;
+  };
+  std::vector<Case> cases;
+  for (double d : {0.0, 0.05, 0.25, 0.49, 0.5, 0.7}) {
+    cases.push_back({kRight + d * kDx, 0.04, 1.0, 0.0, d * kDx});    // beside the right face
+    cases.push_back({0.15, 0.0795 + d * kDx, 0.0, 1.0, d * kDx});    // above the top
+    cases.push_back({kLeft - d * kDx, 0.0007, -1.0, 0.0, d * kDx});  // the left foot, 0.47 dx above the floor
+  }
+  for (const Case& c : cases) {
+    const double vx = 0.0, vy = 0.0, rho = 1000.0, p = 0.0, mass = 1000.0 * kDx * kDx;
+    const std::int64_t gid = 7;
+    double ax = 0.0, ay = 0.0;
+    wall.find_pairs(&c.x, &c.y, 1, kernel);
+    ASSERT_EQ(wall.particles().size(), 1u) << "a particle " << c.d / kDx << " dx from the plate has ghosts";
+    wall.momentum(&vx, &vy, &rho, &p, &mass, &gid, k, &ax, &ay);
+    const double q = std::max(c.d / k.wall_range, 1e-3);
+    const double expected = q < 1.0 ? k.wall_amplitude * (1.0 - q) / std::sqrt(q) : 0.0;
+    const std::string where = "at (" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")";
+    EXPECT_NEAR(ax, expected * c.nx, 1e-12 * k.wall_amplitude) << where;
+    EXPECT_NEAR(ay, expected * c.ny, 1e-12 * k.wall_amplitude) << where;
+    double fx = 0.0, fy = 0.0;
+    for (const auto& l : wall.loads()) {
+      fx += l.fx;
+      fy += l.fy;
+    }
+    EXPECT_NEAR(fx, -mass * ax, 1e-12 * mass * k.wall_amplitude) << where;
+    EXPECT_NEAR(fy, -mass * ay, 1e-12 * mass * k.wall_amplitude) << where;
+  }
 }
 
 }  // namespace
