@@ -172,7 +172,7 @@ std::vector<Eigen::Vector2d> ContactCoupling::surface_normals() const {
   const std::size_t last = pts.size() - 1;
   for (std::size_t k = 0; k <= last; ++k) {
     const Eigen::Vector2d t = pts[std::min(k + 1, last)] - pts[k == 0 ? 0 : k - 1];
-    normal[k] = Eigen::Vector2d(t.y(), -t.x()).normalized();
+    normal[k] = turned_clockwise(t).normalized();
   }
   return normal;
 }
@@ -335,8 +335,8 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
     std::vector<int> kept;
     for (std::size_t j = 0; j < active.size(); ++j) {
       const auto& seg = segments[static_cast<std::size_t>(subset[j].segment)];
-      const Eigen::Vector2d d = solver_->position(seg.second) - solver_->position(seg.first);
-      const Eigen::Vector2d n = Eigen::Vector2d(d.y(), -d.x()).normalized();
+      const Eigen::Vector2d n =
+          turned_clockwise(solver_->position(seg.second) - solver_->position(seg.first)).normalized();
       if (system_->forces()[j].dot(n) >= 0.0 || predicted_gap[active[j]] < 0.0) kept.push_back(active[j]);
     }
     if (kept.size() == active.size()) break;
@@ -393,7 +393,7 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
       const auto& seg = segments[static_cast<std::size_t>(invaders[k].segment)];
       const Eigen::Vector2d xf = solver_->position(seg.first), xs = solver_->position(seg.second);
       const Eigen::Vector2d d = xs - xf;
-      const Eigen::Vector2d n = Eigen::Vector2d(d.y(), -d.x()).normalized();
+      const Eigen::Vector2d n = turned_clockwise(d).normalized();
       const double eta =
           std::clamp(d.dot(y - xf) / d.squaredNorm(), 0.0, 1.0);  // eq. 20 at the final surface
       const Eigen::Vector2d vs = (1.0 - eta) * solver_->velocity().segment<2>(2 * seg.first) +

@@ -17,7 +17,7 @@ SegmentProjection project_on_segment(const Eigen::Vector2d& x, const Eigen::Vect
   p.length = d.norm();
   HALFETI_CHECK(p.length > 0.0, "degenerate surface segment (zero length)");
   p.tangent = d / p.length;
-  p.normal = Eigen::Vector2d(p.tangent.y(), -p.tangent.x());  // clockwise turn: outward for a CCW surface
+  p.normal = turned_clockwise(p.tangent);  // outward for a CCW surface
   const Eigen::Vector2d r = x - first;
   p.eta = p.tangent.dot(r) / p.length;  // eq. 20 (tangent reading)
   p.gap = p.normal.dot(r);

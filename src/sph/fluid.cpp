@@ -264,6 +264,9 @@ void Fluid::compute_forces() {
       PlateWallConstants pk{dx_, kernel_.h, k.rho0, c0_, k.alpha, k.body_x, k.body_y};
       pk.wall_amplitude = k.wall_amplitude;  // the tank walls' repulsion on the faces too
       pk.wall_range = k.wall_range;
+      pk.tank_length = params_.tank_length;
+      pk.tank_height = params_.tank_height;
+      pk.lid = params_.lid;
       plate_wall_.momentum(vx_.data(), vy_.data(), rho_.data(), p_.data(), mass_.data(), gid_.data(), pk,
                            rates_.ax.data(), rates_.ay.data());
     }

@@ -325,6 +325,8 @@ void PlateWall::find_pairs(const double* x, const double* y, int n, const Kernel
   ny_.clear();
   eta_.clear();
   distance_.clear();
+  px_.clear();
+  py_.clear();
   seg_.clear();
   start_.push_back(0);
   if (empty()) return;
@@ -377,6 +379,8 @@ void PlateWall::find_pairs(const double* x, const double* y, int n, const Kernel
     seg_.push_back(best);
     eta_.push_back(best_eta);
     distance_.push_back(best_d);
+    px_.push_back(xi);
+    py_.push_back(yi);
   }
 }
 
@@ -410,11 +414,18 @@ void PlateWall::momentum(const double* vx, const double* vy, const double* rho, 
     // along a wall sums to one): so that water reaching the plate's foot meets the same corner as at the tank's
     // corners. Without it the contact put every particle that reached a face exactly on it, and at the foot, where
     // the floor's repulsion holds the height, particles landed on one point and never parted (docs/coupling.md,
-    // section 18).
+    // section 18). Within one spacing of a tank wall the push has no part into that wall (the rigid wall takes it,
+    // as it takes the contact's corrections, Fluid::apply_corrections): in a gap narrower than a spacing, under a
+    // hanging gate's free end, the two repulsions would otherwise squeeze a particle through the floor.
     const double push = monaghan_kos_repulsion(std::max(distance_[a], 1e-12 * k.dx), 0.0, 1.0, k.wall_range,
                                                k.wall_amplitude);
-    sx += push * nx;
-    sy += push * ny;
+    double push_x = push * nx, push_y = push * ny;
+    if (py_[a] < k.dx) push_y = std::max(push_y, 0.0);
+    if (k.lid && py_[a] > k.tank_height - k.dx) push_y = std::min(push_y, 0.0);
+    if (px_[a] < k.dx) push_x = std::max(push_x, 0.0);
+    if (px_[a] > k.tank_length - k.dx) push_x = std::min(push_x, 0.0);
+    sx += push_x;
+    sy += push_y;
     ax[i] += sx;
     ay[i] += sy;
     // The plate gets the opposite force at the particle's closest point, shared by the segment's two points as a

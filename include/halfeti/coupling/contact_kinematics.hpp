@@ -15,6 +15,11 @@ struct SurfacePolyline {
   int segment_count() const { return points.empty() ? 0 : static_cast<int>(points.size()) - 1; }
 };
 
+// The direction t turned clockwise: for a segment's direction F -> S, its outward normal (not normalised).
+inline Eigen::Vector2d turned_clockwise(const Eigen::Vector2d& t) {
+  return {t.y(), -t.x()};
+}
+
 // A particle projected onto one segment.
 struct SegmentProjection {
   double eta = 0.0;     // eq. 20 with the tangent: t . (x - x_F) / l_e, not clamped (may leave [0, 1])

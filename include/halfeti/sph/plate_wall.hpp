@@ -45,6 +45,10 @@ struct PlateWallConstants {
   double body_x = 0.0, body_y = 0.0;
   // The tank walls' Monaghan & Kos (1999) repulsion, on the faces as on the walls: amplitude (m/s^2) and range (m)
   double wall_amplitude = 0.0, wall_range = 0.0;
+  // The tank [0, tank_length] x [0, tank_height] (the lid only with `lid`): within one spacing of a tank wall the
+  // faces' repulsion does not push a particle into it
+  double tank_length = 0.0, tank_height = 0.0;
+  bool lid = false;
 };
 
 // Ghost lattice (docs/coupling.md, sections 12 and 17): the plate (its outline runs up the right face, across the top
@@ -114,9 +118,9 @@ class PlateWall {
   std::vector<double> gx_, gy_, gvol_;
   std::vector<int> gregion_, gfibre_, row_start_;
   // Per particle with ghosts: its index, its pairs [start, start+count), its wall normal, closest segment, the
-  // parameter of its closest point on it (where the load goes) and its distance from it.
+  // parameter of its closest point on it (where the load goes), its distance from it and its position.
   std::vector<int> particle_, start_, ghost_, seg_;
-  std::vector<double> ex_, ey_, f_, nx_, ny_, eta_, distance_;
+  std::vector<double> ex_, ey_, f_, nx_, ny_, eta_, distance_, px_, py_;
   std::vector<PlateWallLoad> loads_;
 
   bool hidden(double xi, double yi, double xg, double yg, int fibre) const;

@@ -247,6 +247,8 @@ TEST(PlateWallRepulsion, AsTheTankWallsWithinHalfASpacingOfAFaceAndTheOppositeOn
   k.c0 = 20.0;
   k.wall_amplitude = 0.01 * k.c0 * k.c0 / k.h;
   k.wall_range = 0.5 * kDx;
+  k.tank_length = 0.3;
+  k.tank_height = 0.2;
   struct Case {
     double x, y, nx, ny, d;
   };
@@ -276,6 +278,54 @@ TEST(PlateWallRepulsion, AsTheTankWallsWithinHalfASpacingOfAFaceAndTheOppositeOn
     EXPECT_NEAR(fx, -mass * ax, 1e-12 * mass * k.wall_amplitude) << where;
     EXPECT_NEAR(fy, -mass * ay, 1e-12 * mass * k.wall_amplitude) << where;
   }
+}
+
+TEST(PlateWallRepulsion, PushesNoParticleIntoTheFloor) {
+  // The paper's plate hanging with its free end 1 mm (2/3 dx) above the floor, as the Antoci gate's: a particle in the
+  // gap, 0.4 mm under the end, is within dx/2 of the plate and of the floor. The end's push (down) would drive it into
+  // the floor against the floor's own repulsion; within one spacing of the floor that part is the floor's, so the
+  // particle gets none, and neither does the plate.
+  PlateOutline up = paper_outline(0.0795), o;
+  for (std::size_t k = up.size();
+       k-- > 0;) {  // mirrored about y = 0.0805 / 2 and reversed: outward stays outward
+    o.x.push_back(up.x[k]);
+    o.y.push_back(0.0805 - up.y[k]);
+  }
+  for (auto* v : {&o.vx, &o.vy, &o.ax, &o.ay}) v->assign(o.size(), 0.0);
+  PlateWall wall;
+  const Kernel kernel{KernelKind::kCubicSpline, 1.33 * kDx, 1.0};
+  wall.set_outline(o, kDx, kernel.support());
+  PlateWallConstants k;
+  k.dx = kDx;
+  k.h = kernel.h;
+  k.rho0 = 1000.0;
+  k.c0 = 20.0;
+  k.wall_amplitude = 0.01 * k.c0 * k.c0 / k.h;
+  k.wall_range = 0.5 * kDx;
+  k.tank_length = 0.3;
+  k.tank_height = 0.2;
+  const double vx = 0.0, vy = 0.0, rho = 1000.0, p = 0.0, mass = 1000.0 * kDx * kDx;
+  const std::int64_t gid = 3;
+  for (double y : {0.0003, 0.0006}) {  // in the gap, 0.7 and 0.4 mm under the end (within dx/2 of it)
+    const double x = 0.15;
+    double ax = 0.0, ay = 0.0;
+    wall.find_pairs(&x, &y, 1, kernel);
+    ASSERT_EQ(wall.particles().size(), 1u);
+    wall.momentum(&vx, &vy, &rho, &p, &mass, &gid, k, &ax, &ay);
+    EXPECT_EQ(ax, 0.0) << "y = " << y;
+    EXPECT_EQ(ay, 0.0) << "y = " << y;
+  }
+  // The same plate and particle 0.5 m up, far from the floor: pushed down (q = 0.53: A 0.47 / sqrt(0.53) = 0.64 A),
+  // so the check above can fail.
+  PlateOutline raised = o;
+  for (double& yy : raised.y) yy += 0.5;
+  wall.set_outline(raised, kDx, kernel.support());
+  const double x = 0.15, y = 0.5006;
+  double ax = 0.0, ay = 0.0;
+  wall.find_pairs(&x, &y, 1, kernel);
+  ASSERT_EQ(wall.particles().size(), 1u);
+  wall.momentum(&vx, &vy, &rho, &p, &mass, &gid, k, &ax, &ay);
+  EXPECT_LT(ay, -0.5 * k.wall_amplitude);
 }
 
 }  // namespace
