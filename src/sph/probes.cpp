@@ -24,7 +24,9 @@ std::array<double, 3> interpolate(MPI_Comm comm, const Kernel& k, double px, dou
   std::vector<double> v;
   const double rc = k.support();
   for (int i = 0; i < n; ++i) {
-    const double dx = x[i] - px, dy = y[i] - py, r = std::hypot(dx, dy);
+    const double dx = x[i] - px, dy = y[i] - py;
+    if (std::abs(dx) >= rc || std::abs(dy) >= rc) continue;  // out of reach, before the square root
+    const double r = std::hypot(dx, dy);
     if (r >= rc) continue;
     const double vw = mass[i] / rho[i] * k.value(r);
     const double f[3] = {pressure_from_density(rho[i], rho0, c0), vx[i], vy[i]};
@@ -109,6 +111,7 @@ double Fluid::surface_level(double px) const {
   const auto fraction = [&](double y) {
     double c = 0.0;
     for (std::size_t k = 0; k < sx.size(); ++k) {
+      if (std::abs(sy[k] - y) >= rc) continue;  // out of reach: skipped before the square root (the same sum)
       const double r = std::hypot(sx[k] - px, sy[k] - y);
       if (r < rc) c += sv[k] * kernel_.value(r);
     }
