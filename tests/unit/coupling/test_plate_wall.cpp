@@ -230,6 +230,21 @@ TEST(PlateWallRows, ReachTheFootOfBothFacesOfABentPlate) {
   EXPECT_LT(lowest, 0.53 * kDx) << "the lowest solid ghost is " << lowest / kDx << " dx above the floor";
 }
 
+// The constants of the repulsion tests: the tank walls' repulsion (fluid.wall_repulsion 0.01, c0 20 m/s, range dx/2)
+// in a 0.3 m x 0.2 m tank.
+PlateWallConstants repulsion_constants(const Kernel& kernel) {
+  PlateWallConstants k;
+  k.dx = kDx;
+  k.h = kernel.h;
+  k.rho0 = 1000.0;
+  k.c0 = 20.0;
+  k.wall_amplitude = 0.01 * k.c0 * k.c0 / k.h;
+  k.wall_range = 0.5 * kDx;
+  k.tank_length = 0.3;
+  k.tank_height = 0.2;
+  return k;
+}
+
 TEST(PlateWallRepulsion, AsTheTankWallsWithinHalfASpacingOfAFaceAndTheOppositeOnThePlate) {
   // Water in still state (p = 0, at rest, no body force) so that only the faces' repulsion acts: a particle within
   // dx/2 of a face must get the tank walls' Monaghan & Kos push A (1 - q) / sqrt(q), q = d / (dx/2), along the
@@ -240,15 +255,7 @@ TEST(PlateWallRepulsion, AsTheTankWallsWithinHalfASpacingOfAFaceAndTheOppositeOn
   PlateWall wall;
   const Kernel kernel{KernelKind::kCubicSpline, 1.33 * kDx, 1.0};
   wall.set_outline(o, kDx, kernel.support());
-  PlateWallConstants k;
-  k.dx = kDx;
-  k.h = kernel.h;
-  k.rho0 = 1000.0;
-  k.c0 = 20.0;
-  k.wall_amplitude = 0.01 * k.c0 * k.c0 / k.h;
-  k.wall_range = 0.5 * kDx;
-  k.tank_length = 0.3;
-  k.tank_height = 0.2;
+  const PlateWallConstants k = repulsion_constants(kernel);
   struct Case {
     double x, y, nx, ny, d;
   };
@@ -295,15 +302,7 @@ TEST(PlateWallRepulsion, PushesNoParticleIntoTheFloor) {
   PlateWall wall;
   const Kernel kernel{KernelKind::kCubicSpline, 1.33 * kDx, 1.0};
   wall.set_outline(o, kDx, kernel.support());
-  PlateWallConstants k;
-  k.dx = kDx;
-  k.h = kernel.h;
-  k.rho0 = 1000.0;
-  k.c0 = 20.0;
-  k.wall_amplitude = 0.01 * k.c0 * k.c0 / k.h;
-  k.wall_range = 0.5 * kDx;
-  k.tank_length = 0.3;
-  k.tank_height = 0.2;
+  const PlateWallConstants k = repulsion_constants(kernel);
   const double vx = 0.0, vy = 0.0, rho = 1000.0, p = 0.0, mass = 1000.0 * kDx * kDx;
   const std::int64_t gid = 3;
   for (double y : {0.0003, 0.0006}) {  // in the gap, 0.7 and 0.4 mm under the end (within dx/2 of it)
