@@ -388,10 +388,8 @@ void Fluid::apply_corrections(const std::vector<int>& touched, const double* dx,
     ny = std::max(ny, std::min(y_[i], keep));
     nx = std::max(nx, std::min(x_[i], keep));
     nx = std::min(nx, L - std::min(L - x_[i], keep));
-    const double near = 2.0 * keep;  // one spacing: the band where the wall's repulsion and the contact meet
-    if (ny < near) uy = std::max(uy, 0.0);
-    if (nx < near) ux = std::max(ux, 0.0);
-    if (nx > L - near) ux = std::min(ux, 0.0);
+    // one spacing: the band where the wall's repulsion and the contact meet
+    drop_part_into_walls(nx, ny, 2.0 * keep, L, params_.tank_height, params_.lid, ux, uy);
     x_[i] = nx;
     y_[i] = ny;
     vx_[i] += ux;

@@ -420,10 +420,7 @@ void PlateWall::momentum(const double* vx, const double* vy, const double* rho, 
     const double push = monaghan_kos_repulsion(std::max(distance_[a], 1e-12 * k.dx), 0.0, 1.0, k.wall_range,
                                                k.wall_amplitude);
     double push_x = push * nx, push_y = push * ny;
-    if (py_[a] < k.dx) push_y = std::max(push_y, 0.0);
-    if (k.lid && py_[a] > k.tank_height - k.dx) push_y = std::min(push_y, 0.0);
-    if (px_[a] < k.dx) push_x = std::max(push_x, 0.0);
-    if (px_[a] > k.tank_length - k.dx) push_x = std::min(push_x, 0.0);
+    drop_part_into_walls(px_[a], py_[a], k.dx, k.tank_length, k.tank_height, k.lid, push_x, push_y);
     sx += push_x;
     sy += push_y;
     ax[i] += sx;

@@ -81,4 +81,12 @@ double monaghan_kos_repulsion(double psi, double xi, double db, double two_h, do
   return amplitude * (1.0 - q) / std::sqrt(q) * 0.5 * (1.0 + std::cos(M_PI * xi / db));
 }
 
+void drop_part_into_walls(double x, double y, double band, double length, double height, bool lid, double& ux,
+                          double& uy) {
+  if (y < band) uy = std::max(uy, 0.0);
+  if (lid && y > height - band) uy = std::min(uy, 0.0);
+  if (x < band) ux = std::max(ux, 0.0);
+  if (x > length - band) ux = std::min(ux, 0.0);
+}
+
 }  // namespace halfeti::sph

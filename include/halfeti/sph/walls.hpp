@@ -41,4 +41,10 @@ WallParticles build_walls(const FluidParams& p, double extension);
 // boundary particle of spacing db: A (1 - q) / sqrt(q) * P(xi), q = psi / 2h, P(xi) = (1 + cos(pi xi / db)) / 2.
 double monaghan_kos_repulsion(double psi, double xi, double db, double two_h, double amplitude);
 
+// The part of a vector at (x, y) (a force or a velocity change) that points into a wall of the tank [0, length] x
+// [0, height] (the lid only with `lid`) within `band` of that wall, removed: the rigid wall takes it. Used for the
+// contact's corrections and the plate faces' repulsion.
+void drop_part_into_walls(double x, double y, double band, double length, double height, bool lid, double& ux,
+                          double& uy);
+
 }  // namespace halfeti::sph
