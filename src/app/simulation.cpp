@@ -5,12 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
-#include <ctime>
 #include <fstream>
 
 #include "halfeti/app/restart.hpp"
+#include "halfeti/app/run_control.hpp"
 #include "halfeti/app/run_size.hpp"
 #include "halfeti/core/collective.hpp"
 #include "halfeti/core/error.hpp"
@@ -34,46 +33,6 @@ std::string format(const char* fmt, double a) {
 template <class Work>
 void on_structure_rank(MPI_Comm comm, bool structure_rank, Work&& work) {
   collective_outcome(comm, 0, structure_rank, work);
-}
-
-// The signal a run was asked to stop by (0: none), set by the handler, read at each step's end.
-volatile std::sig_atomic_t g_stop_signal = 0;
-extern "C" void request_stop(int signal) {
-  g_stop_signal = signal;
-}
-
-const char* signal_name(int s) {
-  switch (s) {
-    case SIGTERM:
-      return "SIGTERM";
-    case SIGINT:
-      return "SIGINT";
-    case SIGUSR1:
-      return "SIGUSR1";
-    default:
-      return "a signal";
-  }
-}
-
-// The next time of an output schedule once the run has reached t: the sequence interval, interval + interval, ...
-// (each the sum of the one before and the interval), skipping whole intervals at once when a step spans very many
-// (an interval far below the time step) and never stuck where the interval is below the time's round-off.
-double next_in_schedule(double next, double interval, double t, double tol) {
-  if (!(interval > 0.0)) return next;
-  if (const double behind = (t + tol - next) / interval; behind > 1000.0)
-    next += std::floor(behind) * interval;
-  while (next <= t + tol) {
-    const double after = next + interval;
-    next = after > next ? after : std::nextafter(t + tol, HUGE_VAL);
-  }
-  return next;
-}
-
-std::string utc_now() {
-  const std::time_t now = std::time(nullptr);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
-  return buf;
 }
 
 }  // namespace
@@ -239,7 +198,7 @@ void Simulation::sample(double t) {
 // Whether every rank should stop at this step's end: a signal reached one of them, or (rank 0's clock) the next
 // step and a checkpoint would not fit in --max-wall. One reduction per step; the reason on every rank.
 std::string Simulation::stop_reason(double wall, double step_wall) {
-  int why[3] = {static_cast<int>(g_stop_signal), 0, 0};
+  int why[3] = {requested_stop_signal(), 0, 0};
   if (rank_ == 0 && options_.max_wall > 0.0 &&
       wall + 2.0 * step_wall + 2.0 * last_checkpoint_wall_ >= options_.max_wall)
     why[1] = 1;
@@ -329,8 +288,7 @@ int Simulation::run() {
   else if (parts_.fluid)
     initial_mass_ = parts_.fluid->total_mass();
   write_summary("running", 0.0, 0.0);
-  g_stop_signal = 0;
-  for (int sig : {SIGTERM, SIGINT, SIGUSR1}) std::signal(sig, request_stop);
+  install_stop_handlers();
 
   const double loop_start = wall_seconds();
   std::string stopped;

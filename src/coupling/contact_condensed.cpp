@@ -66,8 +66,7 @@ std::pair<double, double> ContactSystem::assemble_condensed(const std::vector<Co
     const Eigen::Vector4d rhs_s = lc.rhs.segment<4>(2) - c.transpose() * binv_b;
     std::copy(lc.q + 2, lc.q + 6, local_q_.begin() + 4 * i);
     HALFETI_PETSC_CALL(MatSetValues(a, 4, lc.q + 2, 4, lc.q + 2, update.data(), ADD_VALUES));
-    structure::add_to_vector(rhs, 4, lc.q + 2, rhs_s.data(),
-                             "condensed contact: plate rows of an invader's segment");
+    add_to_vector(rhs, 4, lc.q + 2, rhs_s.data(), "condensed contact: plate rows of an invader's segment");
   }
   HALFETI_PETSC_CALL(MatAssemblyBegin(a, MAT_FINAL_ASSEMBLY));
   HALFETI_PETSC_CALL(MatAssemblyEnd(a, MAT_FINAL_ASSEMBLY));

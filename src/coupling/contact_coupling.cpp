@@ -9,6 +9,7 @@
 
 #include "halfeti/core/collective.hpp"
 #include "halfeti/core/error.hpp"
+#include "halfeti/parallel/gather.hpp"
 
 namespace halfeti::coupling {
 
@@ -112,32 +113,13 @@ sph::PlateOutline ContactCoupling::plate_outline() const {
 
 std::vector<Eigen::Vector2d> ContactCoupling::gather_point_loads(const std::vector<sph::PlateWallLoad>& local,
                                                                  bool breakdown) {
-  const int size = comm_.size();
-  const int n = static_cast<int>(local.size());
-  std::vector<int> counts(size), displs(size);
-  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, root_, comm_.get());
-  // Packed as 4 doubles: gid (exact below 2^53), point, fx, fy.
-  std::vector<double> mine;
-  mine.reserve(4 * local.size());
-  for (const auto& l : local) mine.insert(mine.end(), {double(l.gid), double(l.point), l.fx, l.fy});
-  std::vector<double> all;
-  int total = 0;
-  if (rank_ == root_) {
-    for (int r = 0; r < size; ++r) {
-      displs[r] = 4 * total;
-      total += counts[r];
-      counts[r] *= 4;
-    }
-    all.resize(4 * static_cast<std::size_t>(total));
-  }
-  MPI_Gatherv(mine.data(), 4 * n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, root_,
-              comm_.get());
+  std::vector<sph::PlateWallLoad> all = parallel::gather_to_root(comm_.get(), root_, local);
   std::vector<Eigen::Vector2d> load;
   if (rank_ != root_) return load;
-  std::vector<int> order(total);
-  for (int k = 0; k < total; ++k) order[k] = k;
-  std::sort(order.begin(), order.end(), [&](int a, int b) {
-    return all[4 * a] != all[4 * b] ? all[4 * a] < all[4 * b] : all[4 * a + 1] < all[4 * b + 1];
+  // (gid, point) order: a fixed summation order on any number of ranks (stable: one particle's loads on one
+  // point keep its own rank's order, which does not depend on the split).
+  std::stable_sort(all.begin(), all.end(), [](const sph::PlateWallLoad& a, const sph::PlateWallLoad& b) {
+    return a.gid != b.gid ? a.gid < b.gid : a.point < b.point;
   });
   load.assign(loads_.size(), Eigen::Vector2d::Zero());
   const auto normal = breakdown ? surface_normals() : std::vector<Eigen::Vector2d>{};
@@ -145,13 +127,12 @@ std::vector<Eigen::Vector2d> ContactCoupling::gather_point_loads(const std::vect
     for (auto& face : breakdown_.wall_push) face[0] = face[1] = 0.0;
     for (auto& face : breakdown_.wall_suction) face[0] = face[1] = 0.0;
   }
-  for (int k : order) {  // gid order: a fixed summation order on any number of ranks
-    const double point = all[4 * k + 1];
-    HALFETI_CHECK(point >= 0.0 && point < static_cast<double>(load.size()),
-                  "plate-wall load of particle " << all[4 * k] << " on outline point " << point << " of "
-                                                 << load.size());
-    const auto p = static_cast<std::size_t>(point);
-    const Eigen::Vector2d f(all[4 * k + 2], all[4 * k + 3]);
+  for (const sph::PlateWallLoad& l : all) {
+    HALFETI_CHECK(
+        l.point >= 0 && static_cast<std::size_t>(l.point) < load.size(),
+        "plate-wall load of particle " << l.gid << " on outline point " << l.point << " of " << load.size());
+    const auto p = static_cast<std::size_t>(l.point);
+    const Eigen::Vector2d f(l.fx, l.fy);
     load[p] += f;
     if (!breakdown) continue;
     // Push: the force on the plate points into it (against the outward normal); suction: out of it.
@@ -391,13 +372,12 @@ std::vector<InvaderCorrection> ContactCoupling::solve_on_root(double t, double d
     } else {
       // Inelastic contact without the relocation's velocity: remove the normal approach relative to the surface.
       const auto& seg = segments[static_cast<std::size_t>(invaders[k].segment)];
-      const Eigen::Vector2d xf = solver_->position(seg.first), xs = solver_->position(seg.second);
-      const Eigen::Vector2d d = xs - xf;
-      const Eigen::Vector2d n = turned_clockwise(d).normalized();
-      const double eta =
-          std::clamp(d.dot(y - xf) / d.squaredNorm(), 0.0, 1.0);  // eq. 20 at the final surface
+      const SegmentProjection at =  // eq. 20 at the final surface
+          project_on_segment(y, solver_->position(seg.first), solver_->position(seg.second));
+      const double eta = std::clamp(at.eta, 0.0, 1.0);
       const Eigen::Vector2d vs = (1.0 - eta) * solver_->velocity().segment<2>(2 * seg.first) +
                                  eta * solver_->velocity().segment<2>(2 * seg.second);
+      const Eigen::Vector2d& n = at.normal;
       const double vn = (Eigen::Vector2d(gathered[k].vx, gathered[k].vy) - vs).dot(n);
       out.dvx = vn < 0.0 ? -vn * n.x() : 0.0;
       out.dvy = vn < 0.0 ? -vn * n.y() : 0.0;

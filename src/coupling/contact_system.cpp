@@ -149,9 +149,8 @@ std::pair<double, double> ContactSystem::assemble(const std::vector<ContactInvad
     for (int k = 0; k < rows_per_; ++k) HALFETI_PETSC_CALL(MatSetValue(a, mult[k], mult[k], 0.0, ADD_VALUES));
     // Right-hand side: contact forces A^T lambda on plate and particle, the particle's inertia, the overlap
     // c.
-    structure::add_to_vector(rhs, 6, q, lc.rhs.data(), "contact: rows of an invader and its segment");
-    structure::add_to_vector(rhs, rows_per_, mult, terms.value.data(),
-                             "contact: an invader's multiplier rows");
+    add_to_vector(rhs, 6, q, lc.rhs.data(), "contact: rows of an invader and its segment");
+    add_to_vector(rhs, rows_per_, mult, terms.value.data(), "contact: an invader's multiplier rows");
   }
   HALFETI_PETSC_CALL(MatAssemblyBegin(a, MAT_FINAL_ASSEMBLY));
   HALFETI_PETSC_CALL(MatAssemblyEnd(a, MAT_FINAL_ASSEMBLY));
@@ -170,13 +169,12 @@ std::pair<double, double> ContactSystem::assemble(const std::vector<ContactInvad
 
 void ContactSystem::solve_linear(double when) {
   ScopedTimer timer(timers_, "solve");
-  const KSPConvergedReason reason =
-      structure::solve_with(ksp_.get(), matrix_.get(), rhs_.get(), solution_.get());
+  const KSPConvergedReason reason = solve_with(ksp_.get(), matrix_.get(), rhs_.get(), solution_.get());
   if (reason < 0)
     HALFETI_NUMERICAL_ERROR("coupling: contact solve (eq. 21) failed at t = "
-                            << when << " s with " << n_inv_ << " invaders: "
-                            << structure::ksp_failure(ksp_.get(), reason) << "; the default is -" << prefix_
-                            << "pc_type lu -" << prefix_ << "pc_factor_mat_solver_type mumps");
+                            << when << " s with " << n_inv_
+                            << " invaders: " << ksp_failure(ksp_.get(), reason) << "; the default is -"
+                            << prefix_ << "pc_type lu -" << prefix_ << "pc_factor_mat_solver_type mumps");
 }
 
 ContactSolveReport ContactSystem::solve(const std::vector<ContactInvader>& invaders, double dt, double when) {

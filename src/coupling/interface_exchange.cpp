@@ -6,6 +6,7 @@
 
 #include "halfeti/core/error.hpp"
 #include "halfeti/coupling/ssosd.hpp"
+#include "halfeti/parallel/gather.hpp"
 
 namespace halfeti::coupling {
 
@@ -30,23 +31,7 @@ std::vector<Invader> find_local_invaders(const InterfaceParticles& p, const Surf
 }
 
 std::vector<Invader> gather_invaders(MPI_Comm comm, int root, const std::vector<Invader>& local) {
-  int rank = 0, size = 1;
-  MPI_Comm_rank(comm, &rank);
-  MPI_Comm_size(comm, &size);
-  // Homogeneous ranks: invaders travel as bytes.
-  const int bytes = static_cast<int>(local.size() * sizeof(Invader));
-  std::vector<int> counts(rank == root ? size : 0), displs(rank == root ? size : 0);
-  MPI_Gather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, root, comm);
-  std::vector<Invader> all;
-  if (rank == root) {
-    int total = 0;
-    for (int r = 0; r < size; ++r) {
-      displs[r] = total;
-      total += counts[r];
-    }
-    all.resize(static_cast<std::size_t>(total) / sizeof(Invader));
-  }
-  MPI_Gatherv(local.data(), bytes, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE, root, comm);
+  std::vector<Invader> all = parallel::gather_to_root(comm, root, local);
   // Principle 5: the structure sees its invaders in global id order whatever the decomposition.
   std::sort(all.begin(), all.end(), [](const Invader& a, const Invader& b) { return a.gid < b.gid; });
   return all;

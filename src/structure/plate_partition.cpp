@@ -1,12 +1,11 @@
 #include "halfeti/structure/plate_partition.hpp"
 
-#include <metis.h>
-
 #include <algorithm>
 #include <array>
 #include <numeric>
 
 #include "halfeti/core/error.hpp"
+#include "halfeti/parallel/mesh_partition.hpp"
 
 namespace halfeti::structure {
 
@@ -21,25 +20,16 @@ PlatePartition partition_plate(const PlateMesh& mesh, MPI_Comm comm) {
   p.element_rank.assign(ne, 0);
   if (size > 1) {
     if (rank == 0) {
-      // Dual graph on the corner nodes: two Q9 elements are neighbours when they share an edge (2 corners).
-      std::vector<idx_t> eptr(ne + 1), eind;
+      // Dual graph on the corner nodes: two elements are neighbours when they share an edge (2 corners).
+      std::vector<int> start(ne + 1, 0), corners;
       for (int e = 0; e < ne; ++e) {
         const int* nodes = mesh.element_nodes(e);
         const bool q9 = mesh.nodes_per_element() == 9;
         for (int a : q9 ? std::array<int, 4>{0, 2, 8, 6} : std::array<int, 4>{0, 1, 3, 2})
-          eind.push_back(nodes[a]);
-        eptr[e + 1] = static_cast<idx_t>(eind.size());
+          corners.push_back(nodes[a]);
+        start[e + 1] = static_cast<int>(corners.size());
       }
-      idx_t n_elements = ne, n_nodes = nn, common = 2, parts = size, cut = 0;
-      std::vector<idx_t> epart(ne), npart(nn);
-      idx_t options[METIS_NOPTIONS];
-      METIS_SetDefaultOptions(options);
-      options[METIS_OPTION_SEED] = 1;  // reproducible partitions
-      const int status =
-          METIS_PartMeshDual(&n_elements, &n_nodes, eptr.data(), eind.data(), nullptr, nullptr, &common,
-                             &parts, nullptr, options, &cut, epart.data(), npart.data());
-      HALFETI_CHECK(status == METIS_OK, "METIS_PartMeshDual failed with status " << status);
-      for (int e = 0; e < ne; ++e) p.element_rank[e] = static_cast<int>(epart[e]);
+      p.element_rank = parallel::partition_mesh_dual(start, corners, nn, 2, size);
     }
     MPI_Bcast(p.element_rank.data(), ne, MPI_INT, 0, comm);
   }

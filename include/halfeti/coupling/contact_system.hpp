@@ -23,10 +23,10 @@
 #include <string>
 #include <vector>
 
+#include "halfeti/core/petsc_owner.hpp"
 #include "halfeti/core/timers.hpp"
 #include "halfeti/coupling/contact_constraint.hpp"
 #include "halfeti/coupling/contact_kinematics.hpp"
-#include "halfeti/structure/petsc_owner.hpp"
 #include "halfeti/structure/plate_solver.hpp"
 
 namespace halfeti::coupling {
@@ -108,9 +108,9 @@ class ContactSystem {
   std::vector<Eliminated> eliminated_;
   std::vector<PetscInt> local_q_;  // the 4 plate dofs of each invader's segment (-1: clamped)
   int n_struct_ = 0, n_inv_ = 0, rows_per_ = 1;
-  structure::OwnedMat matrix_;
-  structure::OwnedVec rhs_, solution_;
-  structure::OwnedKsp ksp_;
+  OwnedMat matrix_;
+  OwnedVec rhs_, solution_;
+  OwnedKsp ksp_;
   std::vector<Eigen::Vector2d> y_, lambda_, force_;
   Eigen::VectorXd structure_force_;
   PhaseTimers timers_;

@@ -38,12 +38,12 @@
 
 #include "halfeti/core/communicator.hpp"
 #include "halfeti/core/nodal_element.hpp"
+#include "halfeti/core/petsc_owner.hpp"
 #include "halfeti/core/timers.hpp"
 #include "halfeti/excitation/ground_motion.hpp"
 #include "halfeti/structure/element_family.hpp"
 #include "halfeti/structure/material.hpp"
 #include "halfeti/structure/newmark.hpp"
-#include "halfeti/structure/petsc_owner.hpp"
 #include "halfeti/structure/plate_mesh.hpp"
 #include "halfeti/structure/plate_partition.hpp"
 

@@ -84,8 +84,8 @@ TEST_P(PlateSolverByElement, CallerMatrixReceivesTheSameSystem) {
   s.assemble_newton_system();
   // Embed at offset 3 in a bigger scalar AIJ matrix, as the contact system will.
   const PetscInt n = s.dof_count() + 3;
-  hs::OwnedMat owned_big;
-  hs::OwnedVec owned_rhs;
+  halfeti::OwnedMat owned_big;
+  halfeti::OwnedVec owned_rhs;
   HALFETI_PETSC_CALL(MatCreateSeqAIJ(PETSC_COMM_SELF, n, n, 40, nullptr, owned_big.out()));
   HALFETI_PETSC_CALL(VecCreateSeq(PETSC_COMM_SELF, n, owned_rhs.out()));
   Mat big = owned_big.get();

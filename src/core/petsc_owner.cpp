@@ -1,10 +1,10 @@
-#include "halfeti/structure/petsc_owner.hpp"
+#include "halfeti/core/petsc_owner.hpp"
 
 #include <sstream>
 
 #include "halfeti/core/error.hpp"
 
-namespace halfeti::structure {
+namespace halfeti {
 
 KSPConvergedReason solve_with(KSP ksp, Mat matrix, Vec rhs, Vec solution) {
   HALFETI_PETSC_CALL(KSPSetOperators(ksp, matrix, matrix));
@@ -35,9 +35,9 @@ void add_to_vector(Vec v, int n, const PetscInt* rows, const PetscScalar* values
   }
 }
 
-}  // namespace halfeti::structure
+}  // namespace halfeti
 
-namespace halfeti::structure::detail {
+namespace halfeti::detail {
 
 void raise_petsc_error(PetscErrorCode code, const char* call, const char* func, const char* file, int line) {
   const char* text = nullptr;
@@ -48,4 +48,4 @@ void raise_petsc_error(PetscErrorCode code, const char* call, const char* func, 
   throw InternalError(os.str());
 }
 
-}  // namespace halfeti::structure::detail
+}  // namespace halfeti::detail

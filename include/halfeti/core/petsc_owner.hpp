@@ -8,7 +8,7 @@
 #include <string>
 #include <utility>
 
-namespace halfeti::structure {
+namespace halfeti {
 
 namespace detail {
 [[noreturn]] void raise_petsc_error(PetscErrorCode code, const char* call, const char* func, const char* file,
@@ -21,8 +21,7 @@ namespace detail {
   do {                                                                                                \
     PetscErrorCode halfeti_petsc_code_ = (call);                                                      \
     if (halfeti_petsc_code_ != 0)                                                                     \
-      ::halfeti::structure::detail::raise_petsc_error(halfeti_petsc_code_, #call, __func__, __FILE__, \
-                                                      __LINE__);                                      \
+      ::halfeti::detail::raise_petsc_error(halfeti_petsc_code_, #call, __func__, __FILE__, __LINE__); \
   } while (0)
 
 // Solves with `ksp` and returns the converged reason; a negative reason is returned, not thrown, so the caller
@@ -75,4 +74,4 @@ using OwnedMat = PetscOwner<Mat, MatDestroy>;
 using OwnedVec = PetscOwner<Vec, VecDestroy>;
 using OwnedKsp = PetscOwner<KSP, KSPDestroy>;
 
-}  // namespace halfeti::structure
+}  // namespace halfeti
