@@ -2,8 +2,9 @@
 #
 # Builds one GoogleTest executable. Without NP it runs once, serially (MPI is initialised as a singleton).
 # With NP it is registered once per rank count as name_npN, launched with mpiexec (oversubscribed, root allowed).
-# PETSC links a main that calls PetscInitialize instead of MPI_Init. Tests are labelled 'fast' unless LABELS says
-# otherwise ('validation' runs are longer and excluded from tools/test).
+# PETSC links a main that calls PetscInitialize instead of MPI_Init. Tests are labelled 'fast' (a few seconds each)
+# unless LABELS says otherwise: 'long' (15 s to a few minutes; still in tools/test's default suite), 'validation'
+# (runs of minutes against references, excluded from tools/test).
 # Time limits scale with the build: AddressSanitizer and UBSan run the end-to-end tests 4-12 times slower (measured
 # 3 Dec), so a sanitizer build gives every test HALFETI_TIMEOUT_FACTOR times its limit.
 if(HALFETI_ENABLE_SANITIZERS)

@@ -47,6 +47,22 @@ bool may_change(const std::string& key) {
 
 }  // namespace
 
+namespace {
+// Two resolved values are the same if their text is, or if both are numbers of the same value: the checkpoint holds
+// the value as the scene wrote it ("0.00182500"), a continued run may give it as --set writes it ("0.001825").
+bool same_value(const std::string& a, const std::string& b) {
+  if (a == b) return true;
+  const auto number = [](const std::string& s, double& v) {
+    if (s.empty()) return false;
+    char* end = nullptr;
+    v = std::strtod(s.c_str(), &end);
+    return end == s.c_str() + s.size();
+  };
+  double x = 0.0, y = 0.0;
+  return number(a, x) && number(b, y) && x == y;
+}
+}  // namespace
+
 std::string changed_physics_key(const std::string& saved_scene, const std::string& scene) {
   std::map<std::string, std::string> a, b;
   try {
@@ -59,7 +75,7 @@ std::string changed_physics_key(const std::string& saved_scene, const std::strin
     if (may_change(key)) continue;
     const auto it = a.find(key);
     if (it == a.end()) return key + " (not in the checkpoint's scene, now " + value + ")";
-    if (it->second != value) return key + " (checkpoint " + it->second + ", now " + value + ")";
+    if (!same_value(it->second, value)) return key + " (checkpoint " + it->second + ", now " + value + ")";
   }
   for (const auto& [key, value] : a)
     if (!may_change(key) && b.find(key) == b.end()) return key + " (checkpoint " + value + ", now absent)";

@@ -1,22 +1,15 @@
 #include "halfeti/app/simulation.hpp"
 
-#include <sys/resource.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 
 #include "halfeti/app/restart.hpp"
 #include "halfeti/app/run_control.hpp"
 #include "halfeti/app/run_size.hpp"
 #include "halfeti/core/collective.hpp"
 #include "halfeti/core/error.hpp"
-#include "halfeti/core/files.hpp"
-#include "halfeti/core/version.hpp"
 #include "halfeti/io/checkpoint.hpp"
-#include "halfeti/io/json.hpp"
 
 namespace halfeti::app {
 
@@ -56,49 +49,12 @@ Simulation::Simulation(MPI_Comm comm, scene::Scene scene, RunOptions options)
     build_parts(parts_, comm_, options_.trace_coupling);
   }
   if (parts_.fluid) initial_particles_ = parts_.fluid->global_count();  // the lattice's (before a restore)
-  const std::string fields = out_dir_ + "/fields";
-  if (parts_.fluid) {
-    fluid_fields_ = std::make_unique<io::FieldSeries>(comm_, fields, "fluid");
-    tank_fields_ = std::make_unique<io::FieldSeries>(comm_, fields, "tank");
-  }
-  if (parts_.structure_setup) plate_fields_ = std::make_unique<io::FieldSeries>(comm_, fields, "plate");
-  if (!parts_.cable_setups.empty())
-    cable_fields_ = std::make_unique<io::FieldSeries>(comm_, fields, "cables");
+  open_field_series();
   if (checkpoint) {
     ScopedTimer timer(timers_, "restart");
     restore(*checkpoint);
   }
-  std::vector<std::string> names;
-  for (const auto& p : probes_) names.push_back(p.name);
-  // A continued run carries the probe rows up to the checkpoint (from its own folder or the one it came from),
-  // continues the field series in its own folder, and appends to its log.
-  std::vector<std::string> carried;
-  collective_outcome(comm_, 0, rank_ == 0, [&] {
-    if (checkpoint)
-      carried =
-          probe_rows_until(run_folder_of(restart_path_) + "/probes.csv", io::ProbeWriter::header(names), t_);
-  });
-  collective_outcome(comm_, 0, true, [&] {  // rank 0 opens the file: its failure is every rank's
-    probe_out_ = std::make_unique<io::ProbeWriter>(out_dir_ + "/probes.csv", names, rank_ == 0, carried);
-  });
-  if (continuing_) {
-    for (auto* series : {fluid_fields_.get(), plate_fields_.get(), cable_fields_.get(), tank_fields_.get()})
-      if (series) series->resume(t_);
-  }
-  collective_outcome(comm_, 0, true, [&] {
-    log_ = std::make_unique<io::RunLog>(out_dir_ + "/log.txt", rank_ == 0, options_.echo, continuing_);
-  });
-  collective_outcome(comm_, 0, rank_ == 0, [&] {
-    std::vector<std::string> units, kinds;
-    for (const auto& p : probes_) {
-      units.push_back(p.unit);
-      kinds.push_back(p.kind);
-    }
-    io::write_file_atomically(out_dir_ + "/probes.json", io::probe_columns_json(names, units, kinds));
-    io::write_file_atomically(out_dir_ + "/scene.resolved.yaml", std::string("# resolved by halfeti ") +
-                                                                     kVersion + " from " + scene_.file +
-                                                                     "\n" + scene_.resolved_text());
-  });
+  open_outputs(checkpoint != nullptr);
 }
 
 Simulation::~Simulation() = default;

@@ -64,7 +64,9 @@ class Simulation {
   void prepare_structure();
   void step_structure(double t, double dt);
   void load_cables(double t);
-  void write_fields(double t);  // every series of the run's parts (simulation_fields.cpp)
+  void open_field_series();          // the field series of the run's parts (simulation_outputs.cpp)
+  void open_outputs(bool restored);  // probes.csv, probes.json, log.txt, scene.resolved.yaml
+  void write_fields(double t);       // every series of the run's parts (simulation_fields.cpp)
   void write_fluid_fields(double t);
   void write_plate_fields(double t);
   void write_cable_fields(double t);

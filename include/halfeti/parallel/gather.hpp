@@ -23,9 +23,9 @@ std::vector<T> gather_to_root(MPI_Comm comm, int root, const std::vector<T>& loc
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
-  HALFETI_CHECK(local.size() <= static_cast<std::size_t>(std::numeric_limits<int>::max()) / sizeof(T),
-                "gather_to_root: " << local.size() << " records of " << sizeof(T)
-                                   << " bytes exceed one MPI message");
+  HALFETI_CHECK(
+      local.size() <= static_cast<std::size_t>(std::numeric_limits<int>::max()) / sizeof(T),
+      "gather_to_root: " << local.size() << " records of " << sizeof(T) << " bytes exceed one MPI message");
   const int bytes = static_cast<int>(local.size() * sizeof(T));
   std::vector<int> counts(rank == root ? size : 0), displs(rank == root ? size : 0);
   MPI_Gather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, root, comm);

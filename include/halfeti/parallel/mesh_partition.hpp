@@ -11,7 +11,8 @@ namespace halfeti::parallel {
 // element_start[e + 1]). Two elements are neighbours when they share `common` nodes (2 for an edge in 2D).
 // Returns each element's part in [0, parts); the partition is reproducible (fixed seed). Not collective: call it
 // on one rank and broadcast.
-std::vector<int> partition_mesh_dual(const std::vector<int>& element_start, const std::vector<int>& element_nodes,
-                                     int node_count, int common, int parts);
+std::vector<int> partition_mesh_dual(const std::vector<int>& element_start,
+                                     const std::vector<int>& element_nodes, int node_count, int common,
+                                     int parts);
 
 }  // namespace halfeti::parallel

@@ -11,6 +11,7 @@
 
 #include "halfeti/io/metrics.hpp"
 #include "halfeti/sph/fluid.hpp"
+#include "scene_fluid.hpp"
 
 using namespace halfeti::sph;
 
@@ -18,19 +19,12 @@ TEST(DamBreak, SurgeFrontFollowsMartinMoyce) {
   const halfeti::io::Curve data = halfeti::io::read_reference(
       std::string(HALFETI_SOURCE_DIR) + "/inputs/validation/data/dambreak_martin_moyce_1952_a2p25in.csv",
       "T_star", "Z_over_a");
+  // inputs/validation/dambreak.yaml as it stands (a / 25, c0 from eq. 10 with Ritter's front speed, the floor's
+  // law of the wall: the scene's comments give the reasons).
   const double a = 0.05715;
-  FluidParams p;
-  p.tank_length = 16.0 * a;
-  p.tank_height = 3.0 * a;
-  p.spacing = a / 25.0;
-  p.water = {{0.0, 0.0, a, 2.0 * a, 0.0}};
-  // eq. 10 with the flow's own velocity scale: the surge runs at up to Ritter's 2 sqrt(g d), d = 2a (2.1 m/s),
-  // twice the long-wave speed sqrt(g d) the automatic c0 assumes; c0 = u_b / sqrt(drho/rho0) = 30 m/s for
-  // drho/rho0 = 0.5%. (The automatic 15 m/s lets the front run 1.2% further: docs/sph.md.)
-  p.sound_speed = 2.0 * std::sqrt(p.gravity * 2.0 * a) / std::sqrt(0.5 * p.max_density_variation);
-  // The experiment's floor drags the surge (its late front runs at 1.69 a sqrt(2g/a) against the free-slip 1.81):
-  // the smooth-wall law of the wall on the first particle layer (wall_friction.hpp), no fitted constant.
-  p.wall_friction = WallFriction::kLogLaw;
+  const FluidParams p = halfeti::test::scene_fluid_params("inputs/validation/dambreak.yaml");
+  ASSERT_EQ(p.water.size(), 1u);
+  ASSERT_NEAR(p.water[0].x1, a, 1e-12) << "the scene's column is a wide";
   Fluid fluid(MPI_COMM_WORLD, p, nullptr);
   const double tscale = std::sqrt(2.0 * p.gravity / a);  // T* = t sqrt(2 g / a)
   // The surge's speed dZ/dT*: least-squares slopes of the data and of the run over the points from T* = 4.4 on,

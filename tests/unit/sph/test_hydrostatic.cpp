@@ -1,22 +1,25 @@
-// Hydrostatic tank (validation ladder step 1) at a coarse spacing: still water must stay still.
+// Hydrostatic tank (validation ladder step 1), inputs/validation/hydrostatic.yaml at a coarse spacing: still water
+// must stay still.
 // HALFETI_HYDROSTATIC_DX=0.0015 runs the paper's resolution (the figure in docs/sph.md).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 #include "halfeti/sph/fluid.hpp"
+#include "scene_fluid.hpp"
 
 using namespace halfeti::sph;
 
 TEST(Hydrostatic, PressureFollowsRhoGDepthAfterOneSecond) {
-  FluidParams p;
-  p.tank_length = 0.30;
-  p.tank_height = 0.40;
-  p.spacing =
-      std::getenv("HALFETI_HYDROSTATIC_DX") ? std::atof(std::getenv("HALFETI_HYDROSTATIC_DX")) : 0.005;
-  p.water = {{0.0, 0.0, 0.30, 0.10, 0.0}};
+  // inputs/validation/hydrostatic.yaml at dx 5 mm (the scene's 1.5 mm with HALFETI_HYDROSTATIC_DX=0.0015).
+  const char* dx = std::getenv("HALFETI_HYDROSTATIC_DX");
+  const FluidParams p = halfeti::test::scene_fluid_params(
+      "inputs/validation/hydrostatic.yaml", {std::string("fluid.spacing=") + (dx ? dx : "0.005")});
+  ASSERT_EQ(p.tank_length, 0.30);
+  ASSERT_EQ(p.water.size(), 1u);
   Fluid fluid(MPI_COMM_WORLD, p, nullptr);
   const double m0 = fluid.total_mass();
   const long n0 = fluid.global_count();

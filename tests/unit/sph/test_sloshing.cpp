@@ -8,16 +8,16 @@
 
 #include "halfeti/io/metrics.hpp"
 #include "halfeti/sph/fluid.hpp"
+#include "scene_fluid.hpp"
 
 using namespace halfeti::sph;
 
 TEST(Sloshing, FirstModeFrequency) {
-  const double L = 0.30, d = 0.10, A = 0.005;
-  FluidParams p;
-  p.tank_length = L;
-  p.tank_height = 0.30;
-  p.spacing = 0.004;
-  p.water = {{0.0, 0.0, L, d, A}};
+  // inputs/validation/sloshing.yaml (amplitude 3 mm) at dx 4 mm.
+  const FluidParams p =
+      halfeti::test::scene_fluid_params("inputs/validation/sloshing.yaml", {"fluid.spacing=0.004"});
+  ASSERT_EQ(p.water.size(), 1u);
+  const double L = p.tank_length, d = p.water[0].y1;
   Fluid fluid(MPI_COMM_WORLD, p, nullptr);
   const double k = M_PI / L, f_theory = std::sqrt(p.gravity * k * std::tanh(k * d)) / (2.0 * M_PI);
   // Elevation at the left wall, sampled every step, over 3.2 s (four periods and more); the frequency from the
