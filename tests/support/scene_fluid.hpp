@@ -16,7 +16,8 @@ namespace halfeti::test {
 
 // `relative`: a scene path from the repository's root; `sets`: "key=value" overrides. Still-tank scenes only (the
 // automatic sound speed is taken with no ground motion).
-inline sph::FluidParams scene_fluid_params(const std::string& relative, const std::vector<std::string>& sets = {}) {
+inline sph::FluidParams scene_fluid_params(const std::string& relative,
+                                           const std::vector<std::string>& sets = {}) {
   const scene::Scene s = scene::load_scene(std::string(HALFETI_SOURCE_DIR) + "/" + relative, sets,
                                            *app::scene_schema(), MPI_COMM_WORLD);
   return app::fluid_params(s.root(), 0.0);
