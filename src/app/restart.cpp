@@ -45,9 +45,6 @@ bool may_change(const std::string& key) {
   return key == "scene.end_time" || key == "scene.description" || key.rfind("output.", 0) == 0;
 }
 
-}  // namespace
-
-namespace {
 // Two resolved values are the same if their text is, or if both are numbers of the same value: the checkpoint holds
 // the value as the scene wrote it ("0.00182500"), a continued run may give it as --set writes it ("0.001825").
 bool same_value(const std::string& a, const std::string& b) {
@@ -61,6 +58,7 @@ bool same_value(const std::string& a, const std::string& b) {
   double x = 0.0, y = 0.0;
   return number(a, x) && number(b, y) && x == y;
 }
+
 }  // namespace
 
 std::string changed_physics_key(const std::string& saved_scene, const std::string& scene) {
