@@ -114,6 +114,24 @@ Registry<ProbeFactory> build_registry() {
         "from the floor (run-up jets and spray above a gap not counted) [m]",
         keys({Key::real("x", "where", "m").required().non_negative()}),
         at_x([](const sph::Fluid& f, double x) { return f.surface_level(x); }, "m"));
+  r.add(
+      "surface_mode",
+      "amplitude of the free surface's standing mode n, cos(n pi x / L): (2 / M) sum_k level(x_k) "
+      "cos(n pi x_k / L) over M midpoints x_k = (k + 1/2) L / M, level as surface_level [m]",
+      keys({Key::integer("mode", "n, the mode's number of half waves across the tank").required().at_least(1),
+            Key::integer("samples", "M, the points across the tank the surface is sampled at")
+                .def(32)
+                .at_least(8)}),
+      [](const scene::Node& p, Parts& parts) {
+        parts.require_fluid(p.path());
+        const int n = static_cast<int>(p.integer("mode")), m = static_cast<int>(p.integer("samples"));
+        if (2 * n > m)
+          HALFETI_USER_ERROR(p.key_path("samples") << ": " << m << " samples cannot resolve mode " << n
+                                                   << " (at least 2 per half wave: " << 2 * n << ")");
+        const Parts* owner = &parts;
+        return ProbeColumn{p.string("name"),
+                           [owner, n, m](double) { return owner->fluid->surface_mode(n, m); }, "m"};
+      });
   r.add("front", "surge front: largest x of the water below a height, plus dx/2 [m]",
         keys({Key::real("below", "only particles below this height count", "m").required().positive()}),
         [](const scene::Node& p, Parts& parts) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "halfeti/core/error.hpp"
 #include "halfeti/parallel/ordered_reduce.hpp"
 #include "halfeti/sph/equation_of_state.hpp"
 #include "halfeti/sph/fluid.hpp"
@@ -161,6 +162,19 @@ double Fluid::min_spacing() const {
   double d = search_.min_distance();
   MPI_Allreduce(MPI_IN_PLACE, &d, 1, MPI_DOUBLE, MPI_MIN, comm_.get());
   return d / dx_;
+}
+
+double Fluid::surface_mode(int n, int samples) const {
+  if (n < 1 || samples < 2 * n)
+    HALFETI_USER_ERROR("surface mode " << n << " with " << samples
+                                       << " samples: needs n >= 1 and at least 2 n samples");
+  const double L = params_.tank_length;
+  double a = 0.0;
+  for (int k = 0; k < samples; ++k) {
+    const double x = (k + 0.5) * L / samples;
+    a += surface_level(x) * std::cos(n * M_PI * x / L);
+  }
+  return 2.0 * a / samples;
 }
 
 }  // namespace halfeti::sph

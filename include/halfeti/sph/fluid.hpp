@@ -101,6 +101,10 @@ class Fluid {
   // The bulk's surface at x from the kernel-interpolated volume fraction (1/2 crossing upward from the floor):
   // robust to run-up jets and spray, which the top particle follows.
   double surface_level(double x) const;
+  // Amplitude of the free surface's standing mode n, cos(n pi x / L), from surface_level at `samples` midpoints
+  // x_k = (k + 1/2) L / samples: (2 / samples) sum_k level(x_k) cos(n pi x_k / L) [m]. The midpoint sum of the
+  // cosine vanishes, so the still depth needs no subtracting. Needs samples >= 2 n.
+  double surface_mode(int n, int samples) const;
   double front_position(double y_max) const;  // max x of fluid particles below y_max, + dx/2
   double total_mass() const;
   // Water that left over the tank's open top (removed from the run, per unit depth [kg/m]), every rank.

@@ -63,3 +63,21 @@ TEST(Hydrostatic, TheSurfaceLevelIgnoresSprayAboveTheBulk) {
   EXPECT_NEAR(fluid.surface_level(0.15), 0.10, 0.25 * p.spacing);
   EXPECT_NEAR(fluid.surface_level(0.05), 0.10, 0.25 * p.spacing);
 }
+
+TEST(Hydrostatic, TheSurfaceModeReadsTheInitialCosine) {
+  // Water released from a first-mode surface A cos(pi x / L) (A = 2 dx, the lattice rounding each column's top to
+  // its spacing): the mode-1 amplitude reads A, the mode-2 amplitude 0, each within a quarter spacing (the
+  // interpolated level's error at a flat surface, above); a surface of -A reads -A (the sign is the mode's phase).
+  for (double a : {0.01, -0.01}) {
+    FluidParams p;
+    p.tank_length = 0.30;
+    p.tank_height = 0.40;
+    p.spacing = 0.005;
+    p.water = {{0.0, 0.0, 0.30, 0.10, a}};
+    Fluid fluid(MPI_COMM_WORLD, p, nullptr);
+    const double m1 = fluid.surface_mode(1, 32), m2 = fluid.surface_mode(2, 32);
+    std::printf("A = %+.3f m: mode 1 %+.5f m, mode 2 %+.5f m\n", a, m1, m2);
+    EXPECT_NEAR(m1, a, 0.25 * p.spacing);
+    EXPECT_NEAR(m2, 0.0, 0.25 * p.spacing);
+  }
+}
