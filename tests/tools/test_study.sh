@@ -54,4 +54,10 @@ for f in study.md error_cost.png convergence.png; do
   [ -s "$work/out/$f" ] || { echo "no $f"; exit 1; }
 done
 grep -q "the runner's own" "$work/run.log" || { cat "$work/run.log"; exit 1; }
+# An axis shortened after the runs: collecting again leaves the run of the dropped point out, and says so.
+good | sed 's/fluid.spacing: \[0.006, 0.005\]/fluid.spacing: [0.005]/' > "$work/still.yaml"
+/usr/bin/python3 "$study" collect "$work/still.yaml" --out "$work/out" > "$work/collect.log" 2>&1 \
+  || { cat "$work/collect.log"; exit 1; }
+grep -q "1 run(s) of points no longer in" "$work/collect.log" || { cat "$work/collect.log"; exit 1; }
+[ "$(wc -l < "$csv")" = 2 ] || { cat "$csv"; echo "expected one point after the axis was shortened"; exit 1; }
 echo "tools/study: refusals and a two-point study ok"
