@@ -43,6 +43,13 @@ done
 grep -qE '^\| largest tip excursion \[% of height\] \| cable, E 1.14 MPa \| 10 \| [0-9.e-]+ \| [0-9.e-]+ \| not run \| not run \| > 1.5 \|$' \
   "$work/setup.md" || { echo "inputs report row wrong:"; grep "cable, E 1.14 MPa | 10 |" "$work/setup.md"; exit 1; }
 [ -s "$work/inputs/paper_inputs.png" ] || { echo "no paper-inputs chart"; exit 1; }
+# The grid's runner refuses an unknown family with one line and exit 2, before anything runs.
+set +e
+message=$(HALFETI_BUILD="$2" /usr/bin/python3 "$root/tools/paper" inputs run --only nowhere --out "$work/grid" 2>&1 >/dev/null)
+status=$?
+set -e
+[ "$status" -eq 2 ] && grep -q "no family 'nowhere'" <<<"$message" && [ ! -e "$work/grid" ] \
+  || { echo "inputs run --only nowhere: $status '$message'"; exit 1; }
 if /usr/bin/python3 "$root/tools/plot" "$work/nowhere" 2>/dev/null; then echo "a missing run was accepted"; exit 1; fi
 # A run without water has nothing to animate: one line naming why, exit 2.
 set +e
