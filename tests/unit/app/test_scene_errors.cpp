@@ -255,6 +255,11 @@ TEST(SceneErrors, ChecksAcrossKeysNameTheFileAndKey) {
        "cannot open accelerogram"},
       {"scene: {name: s, end_time: 1}\nexcitation: {kind: record, file: .}\n",
        "is a folder, not a record file"},
+      // A standing mode needs at least two surface samples per half wave.
+      {"scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
+       "fluid: {spacing: 0.01, water: [{from: [0, 0], to: [0.3, 0.1]}]}\n"
+       "probes: [{name: m, kind: surface_mode, mode: 5, samples: 8}]\n",
+       "probes[0].samples: 8 samples cannot resolve mode 5 (at least 2 per half wave: 10)"},
       // A hanging plate (a gate) reaches down from its clamp: below the floor it does not fit; its nodes have the
       // tank frame's names, so the standing plate's top_right is unknown.
       {"scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
