@@ -37,6 +37,17 @@ const Registry<sph::WallFriction>& wall_friction_registry() {
   return r;
 }
 
+const Registry<sph::WallGhostPressure>& wall_ghost_pressure_registry() {
+  static const auto r = named_values<sph::WallGhostPressure>({
+      {"taylor",
+       "the wall condition across the wall, the particle's own pressure gradient along it (docs/sph.md)",
+       sph::WallGhostPressure::kTaylor},
+      {"body_force", "p_i + rho_i (g - a_wall).r (Adami et al. 2012): holds up films on vertical walls",
+       sph::WallGhostPressure::kBodyForce},
+  });
+  return r;
+}
+
 std::shared_ptr<Schema> water_block_schema() {
   auto s = std::make_shared<Schema>("A rectangle of still water, filled on a square lattice of spacing dx.");
   s->add(Key::point("from", "lower left corner", "m").required());
@@ -95,6 +106,9 @@ std::shared_ptr<const Schema> fluid_schema() {
                .at_most(10.0));
     s->add(Key::boolean("wall_pressure", "add the kernel-truncated pressure of the wall (see docs/sph.md)")
                .def(true));
+    s->add(Key::choice("wall_ghost_pressure", "how the wall ghosts' pressure is continued from the fluid",
+                       wall_ghost_pressure_registry().names())
+               .def("taylor"));
     s->add(Key::choice("wall_friction", "shear of the tank's walls on the water beside them",
                        wall_friction_registry().names())
                .def("none"));
@@ -190,6 +204,7 @@ sph::FluidParams fluid_params(const scene::Node& root, double peak_ground_accele
   p.tensile_correction = f.boolean("tensile_correction");
   p.wall_repulsion = f.real("wall_repulsion");
   p.wall_pressure = f.boolean("wall_pressure");
+  p.wall_ghost_pressure = wall_ghost_pressure_registry().get(f.string("wall_ghost_pressure")).make;
   p.wall_friction = wall_friction_registry().get(f.string("wall_friction")).make;
   p.kinematic_viscosity = f.real("kinematic_viscosity");
   p.cfl = f.real("cfl");

@@ -1,6 +1,7 @@
 #include "halfeti/app/restart.hpp"
 
 #include <dirent.h>
+#include <unistd.h>
 #include <yaml-cpp/yaml.h>
 
 #include <cerrno>
@@ -20,6 +21,7 @@
 namespace halfeti::app {
 
 namespace {
+constexpr std::size_t kMaxOutputPath = 200;  // characters of a file's absolute path (see prepare_run_folder)
 
 void flatten(const YAML::Node& n, const std::string& path, std::map<std::string, std::string>& out) {
   switch (n.Type()) {
@@ -169,6 +171,20 @@ bool prepare_run_folder(MPI_Comm comm, const std::string& out_dir, const io::Che
   MPI_Comm_rank(comm, &rank);
   bool continuing = false;
   collective_outcome(comm, 0, rank == 0, [&] {
+    // Open MPI 4.1's MPI-IO (under parallel HDF5) builds a lock file's name in a fixed buffer and aborts the
+    // process on file paths past about 235 characters; the longest file written is a checkpoint.
+    std::string absolute = out_dir;
+    if (absolute.empty() || absolute[0] != '/') {
+      char cwd[PATH_MAX];
+      absolute = std::string(getcwd(cwd, sizeof cwd) ? cwd : "") + "/" + out_dir;
+    }
+    const std::string longest = absolute + "/checkpoints/" + io::checkpoint_file_name(0);
+    if (longest.size() > kMaxOutputPath)
+      HALFETI_USER_ERROR(
+          "--out '" << out_dir << "': the checkpoints' paths would be " << longest.size()
+                    << " characters long; MPI-IO aborts on paths past about 235, so this program "
+                       "keeps them within "
+                    << kMaxOutputPath << " (choose a shorter output folder)");
     for (const char* sub : {"", "/fields", "/checkpoints"}) io::make_directories(out_dir + sub);
     continuing = checkpoint && same_folder(out_dir, run_folder_of(checkpoint_path));
     if (continuing) {

@@ -18,17 +18,20 @@ std::string compare_tool_usage() {
 
 One error metric of a run's probe (RUN: a run folder or its probes.csv), printed as JSON.
 
-  --metric M         rms, rms_relative (each sample's error over the reference's value; both need --reference), peak, peak_abs, peak_time, frequency (upward crossings of the mean),
-                     mean; with --reference, peak/peak_abs/peak_time/frequency/mean are the run's minus the
-                     reference's
+  --metric M         rms, rms_relative (each sample's error over the reference's value; both need --reference),
+                     peak, peak_abs, peak_time, frequency (upward crossings of the mean), mean, noise (RMS of
+                     the probe minus its --smooth running mean); with --reference, peak/peak_abs/peak_time/
+                     frequency/mean/noise are the run's minus the reference's
   --reference FILE   reference data (a '#'-commented CSV with a header row)
-  --reference-value X  a closed-form reference, constant in time (rms: at the run's own samples; the others: the
-                     run's metric minus X)
+  --reference-value X  a closed-form reference, constant in time (rms, rms_relative, noise: a curve of X at the
+                     run's own samples, whose noise is 0; the others: the run's metric minus X)
   --columns T,V      the reference's time and value columns, by header name (default: the first two)
   --reference-scale A,B  reference time and value in the probe's units: t = A * T, v = B * V (default 1,1)
   --probe-scale S    the probe's values times S before comparing (default 1)
   --subtract-initial the probe's first value subtracted (a displacement relative to the start)
   --window FROM,TO   the times looked at [s] (default: all)
+  --smooth W         the probe replaced by its centred running mean over W seconds before the metric (a
+                     sensor's low-pass); for noise, the running mean's width (required)
   --relative-to S    also print value / S as "relative" (a stated scale: a peak, a depth)
 )";
 }
@@ -63,7 +66,7 @@ int run_compare_tool(const std::vector<std::string>& args, std::ostream& out) {
       return 0;
     }
   std::string run, probe, name, reference, columns;
-  double ts = 1.0, vs = 1.0, probe_scale = 1.0;
+  double ts = 1.0, vs = 1.0, probe_scale = 1.0, smooth = 0.0;
   bool subtract_initial = false;
   Window window;
   std::optional<double> scale, reference_value;
@@ -89,6 +92,8 @@ int run_compare_tool(const std::vector<std::string>& args, std::ostream& out) {
       subtract_initial = true;
     else if (a == "--window")
       std::tie(window.from, window.to) = two_numbers(a, value());
+    else if (a == "--smooth")
+      smooth = number(a, value());
     else if (a == "--relative-to")
       scale = number(a, value());
     else if (a == "--reference-value")
@@ -137,14 +142,16 @@ int run_compare_tool(const std::vector<std::string>& args, std::ostream& out) {
     ref = read_reference(reference, tc, vc, ts, vs);
   }
   double v = 0.0;
-  if (reference_value && needs) {
+  if (reference_value &&
+      (needs || name == "noise")) {  // a constant curve at the run's samples (its noise: 0)
     ref = Curve{c.t, std::vector<double>(c.t.size(), *reference_value)};
-    v = metric(name, c, &*ref, window);
+    v = metric(name, c, &*ref, window, smooth);
   } else {
-    v = metric(name, c, ref ? &*ref : nullptr, window) - (reference_value ? *reference_value : 0.0);
+    v = metric(name, c, ref ? &*ref : nullptr, window, smooth) - (reference_value ? *reference_value : 0.0);
   }
   Json j = Json::object();
   j.set("run", run).set("probe", probe).set("metric", name).set("value", v);
+  j.set("smooth", smooth > 0.0 ? Json(smooth) : Json());
   j.set("reference", !reference.empty() ? Json(reference)
                      : reference_value  ? Json(*reference_value)
                                         : Json());

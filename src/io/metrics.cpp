@@ -84,6 +84,33 @@ double mean_value(const Curve& c, const Window& w) {
   return sum / static_cast<double>(n);
 }
 
+Curve running_mean(const Curve& c, double width) {
+  if (!(width > 0.0)) HALFETI_USER_ERROR("metrics: a running mean needs a width > 0, found " << width);
+  Curve out{c.t, std::vector<double>(c.v.size())};
+  // Two pointers over the sorted times: [lo, hi) holds the samples within t_k +- width / 2.
+  std::size_t lo = 0, hi = 0;
+  double sum = 0.0;
+  for (std::size_t k = 0; k < c.t.size(); ++k) {
+    while (hi < c.t.size() && c.t[hi] <= c.t[k] + 0.5 * width) sum += c.v[hi++];
+    while (c.t[lo] < c.t[k] - 0.5 * width) sum -= c.v[lo++];
+    out.v[k] = sum / static_cast<double>(hi - lo);
+  }
+  return out;
+}
+
+double noise(const Curve& c, double width, const Window& w) {
+  const Curve mean = running_mean(c, width);
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < c.t.size(); ++k)
+    if (w.contains(c.t[k])) {
+      sum += (c.v[k] - mean.v[k]) * (c.v[k] - mean.v[k]);
+      ++n;
+    }
+  if (n == 0) HALFETI_USER_ERROR("metrics: no sample in the window [" << w.from << ", " << w.to << "] s");
+  return std::sqrt(sum / static_cast<double>(n));
+}
+
 double crossing_frequency(const Curve& c, const Window& w, double level) {
   const double mean = std::isnan(level) ? mean_value(c, w) : level;
   std::vector<double> crossings;
@@ -100,7 +127,7 @@ double crossing_frequency(const Curve& c, const Window& w, double level) {
 
 const std::vector<std::string>& metric_names() {
   static const std::vector<std::string> names = {"rms",       "rms_relative", "peak", "peak_abs",
-                                                 "peak_time", "frequency",    "mean"};
+                                                 "peak_time", "frequency",    "mean", "noise"};
   return names;
 }
 
@@ -114,9 +141,18 @@ bool metric_needs_reference(const std::string& name) {
   return name == "rms" || name == "rms_relative";
 }
 
-double metric(const std::string& name, const Curve& run, const Curve* reference, const Window& w) {
+double metric(const std::string& name, const Curve& run, const Curve* reference, const Window& w,
+              double smooth) {
   if (metric_needs_reference(name) && !reference)
     HALFETI_USER_ERROR("metrics: '" << name << "' needs a reference curve");
+  if (smooth < 0.0 || !std::isfinite(smooth))
+    HALFETI_USER_ERROR("metrics: the smoothing width must be >= 0 s, found " << smooth);
+  if (name == "noise") {
+    if (smooth == 0.0)
+      HALFETI_USER_ERROR("metrics: 'noise' needs a smoothing width (the running mean's) > 0");
+    return reference ? noise(run, smooth, w) - noise(*reference, smooth, w) : noise(run, smooth, w);
+  }
+  if (smooth > 0.0) return metric(name, running_mean(run, smooth), reference, w);
   const auto of = [&](const Curve& c) {
     if (name == "peak") return peak(c, w).value;
     if (name == "peak_abs") return peak(c, w, true).value;

@@ -22,6 +22,25 @@ grep -q "^excitation.amplitude=2_excitation.period=0.2,2,0.2,ok,.*,2.0$" "$work/
 "$root/jobscripts/sweep" "$work/tiny.yaml" --zip --vary excitation.amplitude=1,3 --vary excitation.period=0.2,0.2 \
   --out "$work/zip" >/dev/null
 [ "$(tail -n +2 "$work/zip/sweep.csv" | wc -l)" -eq 2 ] || { echo "--zip: expected 2 rows"; exit 1; }
+# --keep: a point added to a finished sweep runs alone; the finished points are kept (their summaries untouched).
+before=$(stat -c %Y "$work/zip/excitation.amplitude=1_excitation.period=0.2/summary.json")
+out=$("$root/jobscripts/sweep" "$work/tiny.yaml" --zip --vary excitation.amplitude=1,3,4 \
+  --vary excitation.period=0.2,0.2,0.2 --out "$work/zip" --keep)
+[ "$(grep -c "kept: " <<<"$out")" -eq 2 ] || { echo "--keep: expected 2 kept points: $out"; exit 1; }
+[ "$(stat -c %Y "$work/zip/excitation.amplitude=1_excitation.period=0.2/summary.json")" = "$before" ] \
+  || { echo "--keep: a kept point was run again"; exit 1; }
+[ "$(tail -n +2 "$work/zip/sweep.csv" | wc -l)" -eq 3 ] || { echo "--keep: expected 3 rows"; exit 1; }
+# A changed fixed --set is another scene: nothing is kept.
+out=$("$root/jobscripts/sweep" "$work/tiny.yaml" --zip --vary excitation.amplitude=1,3 \
+  --vary excitation.period=0.2,0.2 --set scene.end_time=0.1 --out "$work/zip" --keep)
+! grep -q "kept: " <<<"$out" || { echo "--keep kept a run of another scene: $out"; exit 1; }
+# Long point names are cut to 80 characters and a hash (MPI-IO aborts on long file paths).
+"$root/jobscripts/sweep" "$work/tiny.yaml" --zip --vary excitation.amplitude=1 --vary excitation.period=0.2 \
+  --set excitation.start=0 --vary output.probe_interval=0.0100000000000000000000000000000000000000000000000001 \
+  --out "$work/long" --dry-run >/dev/null
+name=$(/usr/bin/python3 -c "import json,sys,os; print(os.path.basename(json.load(open(sys.argv[1]))[0]['folder']))" \
+  "$work/long/runs.json")
+[ "${#name}" -eq 91 ] || { echo "a long point name was not cut: $name"; exit 1; }
 if "$root/jobscripts/sweep" "$work/tiny.yaml" --vary excitation.amplitude --out "$work/bad" 2>/dev/null; then
   echo "a malformed --vary was accepted"; exit 1
 fi

@@ -45,11 +45,23 @@ double crossing_frequency(const Curve& c, const Window& w = {},
 // Mean of the curve's samples in the window (a static value). UserError when none lies in it.
 double mean_value(const Curve& c, const Window& w = {});
 
+// The curve's centred running mean: at each sample t_k the mean of the samples within t_k +- width / 2 (fewer at
+// the curve's ends); a sensor's low-pass, whose first zero lies at 1 / width. UserError unless width > 0.
+Curve running_mean(const Curve& c, double width);
+
+// Noise: the RMS over the window's samples of the curve minus its centred running mean of `width` (the mean taken
+// over the whole curve, so the window's edges see samples beyond them), i.e. roughly the part of the signal above
+// 1 / width. UserError unless width > 0 or when no sample lies in the window.
+double noise(const Curve& c, double width, const Window& w = {});
+
 // The metrics by name, for a study's file and `halfeti compare`: "rms" and "rms_relative" (need a reference), "peak", "peak_abs",
-// "peak_time", "frequency", "mean", and their errors against a reference curve's own value ("peak", "peak_time",
-// "frequency", "mean" with a reference: run's minus reference's).
+// "peak_time", "frequency", "mean", "noise", and their errors against a reference curve's own value ("peak",
+// "peak_time", "frequency", "mean", "noise" with a reference: run's minus reference's). smooth > 0: the run's
+// curve is first replaced by its running mean of that width (the reference is not smoothed); "noise" needs it,
+// as the width its running mean is taken over, and measures the part the smoothing removes.
 bool metric_needs_reference(const std::string& name);  // UserError naming the metric if it is unknown
-double metric(const std::string& name, const Curve& run, const Curve* reference, const Window& w = {});
+double metric(const std::string& name, const Curve& run, const Curve* reference, const Window& w = {},
+              double smooth = 0.0);
 const std::vector<std::string>& metric_names();
 
 // A column pair of a reference data file (inputs/validation/data: '#' comment lines naming the provenance, a

@@ -233,6 +233,11 @@ TEST(Restart, RefusesWhatCannotContinue) {
   EXPECT_NE(test::read_text(run + "_again.stderr").find("holds the outputs of another run"),
             std::string::npos);
   EXPECT_EQ(summary_status(run), "ok");
+  // An output folder too long for MPI-IO's file names: one line, before anything is written (not Open MPI's abort).
+  const std::string deep = run + "_" + std::string(200, 'd');
+  EXPECT_EQ(attempt(end_time(0.01) + " --out " + deep, run + "_deep"), 2);
+  EXPECT_NE(test::read_text(run + "_deep.stderr").find("choose a shorter output folder"), std::string::npos)
+      << test::read_text(run + "_deep.stderr");
 }
 
 TEST(Restart, AFullDiskIsAnIoErrorNamingTheFileWithNoPartialFileLeft) {

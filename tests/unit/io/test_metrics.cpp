@@ -87,6 +87,33 @@ TEST(Metrics, ByNameAgainstAReferenceIsTheDifference) {
   EXPECT_THROW(io::metric_needs_reference("wobble"), UserError);
 }
 
+TEST(Metrics, TheRunningMeanRemovesAWholePeriodAndTheNoiseIsWhatItRemoves) {
+  // A line plus a sine of 21 ms period sampled every 1 ms: a running mean 20.5 ms wide holds 21 samples, one whole
+  // period, so away from the ends it returns the line exactly (its centred mean) and the noise is the sine's RMS,
+  // 0.3 / sqrt(2) (sampled over 38 whole periods: exact to round-off).
+  Curve c;
+  for (int k = 0; k <= 1000; ++k) {
+    const double t = 0.001 * k;
+    c.t.push_back(t);
+    c.v.push_back(line(t) + 0.3 * std::sin(2.0 * kPi * t / 0.021));
+  }
+  const Curve m = io::running_mean(c, 0.0205);
+  for (int k = 10; k <= 990; k += 70) EXPECT_NEAR(m.v[static_cast<std::size_t>(k)], line(c.t[k]), 1e-12) << k;
+  EXPECT_NE(m.v[0], line(0.0));  // the ends average fewer samples: the first 11, not centred
+  const Window w{0.1, 0.1 + 38 * 0.021 - 0.0005};
+  EXPECT_NEAR(io::noise(c, 0.0205, w), 0.3 / std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(io::metric("noise", c, nullptr, w, 0.0205), 0.3 / std::sqrt(2.0), 1e-12);
+  // Smoothed, the peak over the window is the line's at the window's last sample.
+  EXPECT_NEAR(io::metric("peak", c, nullptr, Window{0.1, 0.9}, 0.0205), line(0.9), 1e-12);
+  EXPECT_GT(io::metric("peak", c, nullptr, Window{0.1, 0.9}), line(0.9) + 0.25);  // raw: a crest of the sine
+  // Against a reference: the run's noise minus the reference's (a clean line has none).
+  const Curve clean = sampled(line, 0.0, 1.0, 1000);
+  EXPECT_NEAR(io::metric("noise", c, &clean, w, 0.0205), 0.3 / std::sqrt(2.0), 1e-12);
+  EXPECT_THROW(io::metric("noise", c, nullptr, w), UserError);  // no width
+  EXPECT_THROW(io::running_mean(c, 0.0), UserError);
+  EXPECT_THROW(io::metric("peak", c, nullptr, w, -1.0), UserError);
+}
+
 TEST(Metrics, ReferenceColumnsByNameWithScalesAndTheirErrors) {
   const std::string dir = std::string(HALFETI_BINARY_DIR) + "/io_metrics";
   io::make_directories(dir);
@@ -130,7 +157,21 @@ TEST(Metrics, CompareToolPrintsTheMetricAsJson) {
       0);
   EXPECT_NE(closed_rms.str().find("\"value\": " + io::Json(std::sqrt(2.0 / 3.0)).dump()), std::string::npos)
       << closed_rms.str();
+  // Smoothed over 2.5 s: 1.5, 2, 2.5 (the ends average two samples, the middle three); their mean is 2.
+  std::ostringstream smoothed;
+  ASSERT_EQ(io::run_compare_tool({dir, "--probe", "x", "--metric", "mean", "--smooth", "2.5"}, smoothed), 0);
+  EXPECT_NE(smoothed.str().find("\"value\": 2,"), std::string::npos) << smoothed.str();
+  // The noise against a closed form is the run's own (a constant has none): the line's 0, not 0 - 2.
+  std::ostringstream closed_noise;
+  ASSERT_EQ(io::run_compare_tool(
+                {dir, "--probe", "x", "--metric", "noise", "--smooth", "2.5", "--reference-value", "2"},
+                closed_noise),
+            0);
+  EXPECT_NE(closed_noise.str().find("\"value\": " + io::Json(std::sqrt(0.5 * 0.5 * 2.0 / 3.0)).dump()),
+            std::string::npos)
+      << closed_noise.str();
   std::ostringstream ignored;
+  EXPECT_THROW(io::run_compare_tool({dir, "--probe", "x", "--metric", "noise"}, ignored), UserError);
   EXPECT_THROW(io::run_compare_tool({dir, "--probe", "y", "--metric", "peak"}, ignored), UserError);
   EXPECT_THROW(io::run_compare_tool({dir, "--probe", "x", "--metric", "rms"}, ignored), UserError);
   EXPECT_THROW(io::run_compare_tool({dir, "--probe", "x", "--metric", "peak", "--window", "1"}, ignored),
