@@ -142,8 +142,8 @@ int run_compare_tool(const std::vector<std::string>& args, std::ostream& out) {
     ref = read_reference(reference, tc, vc, ts, vs);
   }
   double v = 0.0;
-  if (reference_value &&
-      (needs || name == "noise")) {  // a constant curve at the run's samples (its noise: 0)
+  // A closed form for rms, rms_relative and noise: a constant curve at the run's samples (its noise is 0).
+  if (reference_value && (needs || name == "noise")) {
     ref = Curve{c.t, std::vector<double>(c.t.size(), *reference_value)};
     v = metric(name, c, &*ref, window, smooth);
   } else {

@@ -36,9 +36,9 @@ TEST(DambreakPressure, TheSurgeArrivesWhenMeasuredAndTheNoiseAndPeakAreMeasured)
   const auto probes = io::read_probe_csv(out + "/probes.csv");
   io::Curve p{probes.column("t"), probes.column("p_wall")};
   for (double& v : p.v) v /= kRhoGH;
-  const io::Curve data = io::read_reference(
-      test::source_path("inputs/validation/data/dambreak_buchner_2002_pressure_2d.csv"), "t_star",
-      "p_over_rhogH", kTimeUnit, 1.0);
+  const io::Curve data =
+      io::read_reference(test::source_path("inputs/validation/data/dambreak_buchner_2002_pressure_2d.csv"),
+                         "t_star", "p_over_rhogH", kTimeUnit, 1.0);
 
   // Arrival: the first sample of the 20 ms mean past 0.1, against the data's first point past 0.1.
   const io::Curve mean = io::running_mean(p, kSmooth);
