@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "halfeti/io/metrics.hpp"
 #include "halfeti/sph/fluid.hpp"
@@ -72,4 +73,40 @@ TEST(DamBreak, SurgeFrontFollowsMartinMoyce) {
         fluid.step_count(), fluid.timers().seconds("forces"));
   EXPECT_LE(rms, 0.085);
   EXPECT_LE(std::abs(slope_err), 0.08);
+}
+
+// Issue #14's decision on this case: the front must converge with resolution, its successive differences
+// shrinking. The scene at a/10, a/15, a/20, a/25 (docs/sph.md, "The front converges with resolution": 0.187,
+// 0.105, 0.050 a, about first order; a/40 adds 0.081 for a refinement 1.5 times larger in dx / a): the RMS of
+// Z/a over the 15 measured times between successive resolutions must fall at each refinement.
+TEST(DamBreak, TheFrontsSuccessiveDifferencesShrinkWithResolution) {
+  const halfeti::io::Curve data = halfeti::io::read_reference(
+      std::string(HALFETI_SOURCE_DIR) + "/inputs/validation/data/dambreak_martin_moyce_1952_a2p25in.csv",
+      "T_star", "Z_over_a");
+  const double a = 0.05715;
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  std::vector<std::vector<double>> fronts;
+  for (int per_a : {10, 15, 20, 25}) {
+    FluidParams p = halfeti::test::scene_fluid_params("inputs/validation/dambreak.yaml");
+    p.spacing = a / per_a;
+    Fluid fluid(MPI_COMM_WORLD, p, nullptr);
+    const double tscale = std::sqrt(2.0 * p.gravity / a);  // T* = t sqrt(2 g / a)
+    std::vector<double> z;
+    for (double tstar : data.t) {
+      while (fluid.time() * tscale < tstar) fluid.step();
+      z.push_back(fluid.front_position(a) / a);
+    }
+    fronts.push_back(z);
+  }
+  double previous = 1e300;
+  for (std::size_t r = 1; r < fronts.size(); ++r) {
+    double sum = 0.0;
+    for (std::size_t k = 0; k < data.t.size(); ++k)
+      sum += (fronts[r][k] - fronts[r - 1][k]) * (fronts[r][k] - fronts[r - 1][k]);
+    const double rms = std::sqrt(sum / static_cast<double>(data.t.size()));
+    if (rank == 0) std::printf("refinement %zu: RMS front difference %.3f a\n", r, rms);
+    EXPECT_LT(rms, previous) << "refinement " << r;
+    previous = rms;
+  }
 }
