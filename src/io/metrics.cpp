@@ -99,16 +99,7 @@ Curve running_mean(const Curve& c, double width) {
 }
 
 double noise(const Curve& c, double width, const Window& w) {
-  const Curve mean = running_mean(c, width);
-  double sum = 0.0;
-  std::size_t n = 0;
-  for (std::size_t k = 0; k < c.t.size(); ++k)
-    if (w.contains(c.t[k])) {
-      sum += (c.v[k] - mean.v[k]) * (c.v[k] - mean.v[k]);
-      ++n;
-    }
-  if (n == 0) HALFETI_USER_ERROR("metrics: no sample in the window [" << w.from << ", " << w.to << "] s");
-  return std::sqrt(sum / static_cast<double>(n));
+  return rms_error(c, running_mean(c, width), w);  // the running mean shares the curve's samples
 }
 
 double crossing_frequency(const Curve& c, const Window& w, double level) {

@@ -16,31 +16,40 @@
 
 using namespace halfeti::sph;
 
+namespace {
+constexpr double kA = 0.05715;  // the column's width a [m] (2.25 in)
+
+// Z / a: the fluid stepped to each T* = t sqrt(2 g / a) of `tstar` in turn and its front read there.
+std::vector<double> front_at(Fluid& fluid, const std::vector<double>& tstar, double gravity) {
+  const double tscale = std::sqrt(2.0 * gravity / kA);
+  std::vector<double> z;
+  for (double ts : tstar) {
+    while (fluid.time() * tscale < ts) fluid.step();
+    z.push_back(fluid.front_position(kA) / kA);
+  }
+  return z;
+}
+}  // namespace
+
 TEST(DamBreak, SurgeFrontFollowsMartinMoyce) {
   const halfeti::io::Curve data = halfeti::io::read_reference(
       std::string(HALFETI_SOURCE_DIR) + "/inputs/validation/data/dambreak_martin_moyce_1952_a2p25in.csv",
       "T_star", "Z_over_a");
   // inputs/validation/dambreak.yaml as it stands (a / 25, c0 from eq. 10 with Ritter's front speed, the floor's
   // law of the wall: the scene's comments give the reasons).
-  const double a = 0.05715;
   const FluidParams p = halfeti::test::scene_fluid_params("inputs/validation/dambreak.yaml");
   ASSERT_EQ(p.water.size(), 1u);
-  ASSERT_NEAR(p.water[0].x1, a, 1e-12) << "the scene's column is a wide";
+  ASSERT_NEAR(p.water[0].x1, kA, 1e-12) << "the scene's column is a wide";
   Fluid fluid(MPI_COMM_WORLD, p, nullptr);
-  const double tscale = std::sqrt(2.0 * p.gravity / a);  // T* = t sqrt(2 g / a)
   // The surge's speed dZ/dT*: least-squares slopes of the data and of the run over the points from T* = 4.4 on,
   // where the data lie on a straight line (the surge after the collapse).
   const double surge_from = 4.4;
   double n = 0, st = 0, st2 = 0, sz = 0, stz = 0, sr = 0, str = 0;
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  halfeti::io::Curve run;  // Z / a at the data's T*
+  const halfeti::io::Curve run{data.t, front_at(fluid, data.t, p.gravity)};  // Z / a at the data's T*
   for (std::size_t k = 0; k < data.t.size(); ++k) {
-    const double tstar = data.t[k], z_data = data.v[k];
-    while (fluid.time() * tscale < tstar) fluid.step();
-    const double z = fluid.front_position(a) / a;
-    run.t.push_back(tstar);
-    run.v.push_back(z);
+    const double tstar = data.t[k], z_data = data.v[k], z = run.v[k];
     if (tstar >= surge_from) {
       n += 1;
       st += tstar;
@@ -83,21 +92,14 @@ TEST(DamBreak, TheFrontsSuccessiveDifferencesShrinkWithResolution) {
   const halfeti::io::Curve data = halfeti::io::read_reference(
       std::string(HALFETI_SOURCE_DIR) + "/inputs/validation/data/dambreak_martin_moyce_1952_a2p25in.csv",
       "T_star", "Z_over_a");
-  const double a = 0.05715;
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   std::vector<std::vector<double>> fronts;
   for (int per_a : {10, 15, 20, 25}) {
     FluidParams p = halfeti::test::scene_fluid_params("inputs/validation/dambreak.yaml");
-    p.spacing = a / per_a;
+    p.spacing = kA / per_a;
     Fluid fluid(MPI_COMM_WORLD, p, nullptr);
-    const double tscale = std::sqrt(2.0 * p.gravity / a);  // T* = t sqrt(2 g / a)
-    std::vector<double> z;
-    for (double tstar : data.t) {
-      while (fluid.time() * tscale < tstar) fluid.step();
-      z.push_back(fluid.front_position(a) / a);
-    }
-    fronts.push_back(z);
+    fronts.push_back(front_at(fluid, data.t, p.gravity));
   }
   double previous = 1e300;
   for (std::size_t r = 1; r < fronts.size(); ++r) {
