@@ -60,6 +60,10 @@ const Case kCases[] = {
      "scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
      "fluid: {spacing: 0.01, wall_friction: manning, water: [{from: [0, 0], to: [0.3, 0.1]}]}\n",
      "bad.yaml:3:39: fluid.wall_friction: expected one of none, log_law, found 'manning'"},
+    {"unknown wall ghost pressure",
+     "scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
+     "fluid: {spacing: 0.01, wall_ghost_pressure: adami, water: [{from: [0, 0], to: [0.3, 0.1]}]}\n",
+     "bad.yaml:3:45: fluid.wall_ghost_pressure: expected one of taylor, body_force, found 'adami'"},
     {"negative viscosity",
      "scene: {name: s, end_time: 1}\ntank: {length: 0.3, height: 0.4}\n"
      "fluid: {spacing: 0.01, kinematic_viscosity: -1e-6, water: [{from: [0, 0], to: [0.3, 0.1]}]}\n",
