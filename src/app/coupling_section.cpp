@@ -119,6 +119,13 @@ std::shared_ptr<const Schema> coupling_schema() {
                "(false: at rest, the still-water validation's setting; the paper scenes use true, stable "
                "with the interface added mass)")
                .def(false));
+    s->add(
+        Key::boolean("plate_wall_free_surface",
+                     "a particle beside a face with the water around it gone (Marrone et al. 2010's "
+                     "free-surface mark) pushes the face but does not pull it: water separating from a face "
+                     "as a free surface (false: the ghosts continue every particle's pressure, tension "
+                     "included)")
+            .def(false));
     s->add(Key::choice(
                "plate_wall_exchange",
                "the plate-water exchange: extrapolated (explicit, the water's load and the face's velocity "
@@ -168,6 +175,7 @@ coupling::CouplingParameters coupling_params(const scene::Node& root) {
   p.unilateral = c.boolean("unilateral");
   p.plate_wall = c.boolean("plate_wall");
   p.plate_wall_velocity = c.boolean("plate_wall_velocity");
+  p.plate_wall_free_surface = c.boolean("plate_wall_free_surface");
   const std::string exchange = c.string("plate_wall_exchange");
   using Exchange = coupling::CouplingParameters::PlateWallExchange;
   p.plate_wall_exchange = exchange == "extrapolated" ? Exchange::kExtrapolated

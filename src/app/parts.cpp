@@ -109,6 +109,7 @@ void build_parts(Parts& parts, MPI_Comm comm, bool trace_coupling) {
   if (cp.plate_wall) {
     parts.fluid->set_plate_offsets(parts.plate_offsets);
     parts.fluid->set_plate_outline(parts.coupling->plate_outline());  // and its mid-line as the barrier
+    parts.fluid->set_plate_free_surface(cp.plate_wall_free_surface);
   } else {
     parts.fluid->set_barriers(parts.coupling->outline());
   }

@@ -147,6 +147,10 @@ Registry<ProbeFactory> build_registry() {
         fluid_probe([](const sph::Fluid& f) { return f.kinetic_energy(); }, "J/m"));
   r.add("max_density_variation", "max |rho - rho0| / rho0 over the water [-]", keys({}),
         fluid_probe([](const sph::Fluid& f) { return f.max_density_variation(); }, "-"));
+  r.add("plate_free_surface",
+        "water particles beside the plate marked as at a free surface at the last force evaluation "
+        "(coupling.plate_wall_free_surface; 0 when off) [-]",
+        keys({}), fluid_probe([](const sph::Fluid& f) { return f.plate_free_surface_count(); }, "-"));
   r.add("min_spacing", "closest pair of water particles at the last neighbour search, in dx [-] (clumping)",
         keys({}), fluid_probe([](const sph::Fluid& f) { return f.min_spacing(); }, "dx"));
   r.add("displacement", "displacement of a named plate node [m]",

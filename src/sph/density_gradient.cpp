@@ -35,4 +35,16 @@ void density_gradient(const ParticleView& pv, const PairList& pairs, std::vector
   }
 }
 
+double moment_min_eigenvalue(const ParticleView& pv, const PairList& pairs, int i) {
+  double b00 = 0, b01 = 0, b11 = 0;  // B is symmetric: grad_i W_ij = -F r_ji
+  for_each_neighbour(pairs, i, [&](int j, int k) {
+    const double vf = -pv.volume[j] * pairs.f[k], ex = pairs.ex[k], ey = pairs.ey[k];
+    b00 += vf * ex * ex;
+    b01 += vf * ex * ey;
+    b11 += vf * ey * ey;
+  });
+  const double mean = 0.5 * (b00 + b11), half = 0.5 * (b00 - b11);
+  return mean - std::sqrt(half * half + b01 * b01);
+}
+
 }  // namespace halfeti::sph

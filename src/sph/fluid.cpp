@@ -261,6 +261,17 @@ void Fluid::compute_forces() {
                         params_.kinematic_viscosity, rates_.ax.data(), rates_.ay.data());
     if (!plate_wall_.empty()) {  // the plate's surface as a moving wall (plate_wall.hpp)
       plate_wall_.find_pairs(x_.data(), y_.data(), n_owned_, kernel_);
+      plate_free_surface_count_ = 0;
+      if (plate_free_surface_) {  // Marrone et al. (2010): the water around the particle is gone
+        std::vector<unsigned char> marks;
+        marks.reserve(plate_wall_.particles().size());
+        for (const int i : plate_wall_.particles()) {
+          const bool free = moment_min_eigenvalue(pv, pairs_, i) <= kFreeSurfaceEigenvalue;
+          marks.push_back(free ? 1 : 0);
+          plate_free_surface_count_ += free ? 1 : 0;
+        }
+        plate_wall_.set_free_surface(std::move(marks));
+      }
       PlateWallConstants pk{dx_, kernel_.h, k.rho0, c0_, k.alpha, k.body_x, k.body_y};
       pk.wall_amplitude = k.wall_amplitude;  // the tank walls' repulsion on the faces too
       pk.wall_range = k.wall_range;

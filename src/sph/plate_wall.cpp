@@ -328,6 +328,7 @@ void PlateWall::find_pairs(const double* x, const double* y, int n, const Kernel
   px_.clear();
   py_.clear();
   seg_.clear();
+  free_surface_.clear();
   start_.push_back(0);
   if (empty()) return;
   const auto& o = outline_;
@@ -384,6 +385,12 @@ void PlateWall::find_pairs(const double* x, const double* y, int n, const Kernel
   }
 }
 
+void PlateWall::set_free_surface(std::vector<unsigned char> marks) {
+  HALFETI_CHECK(marks.size() == particle_.size(),
+                "PlateWall::set_free_surface: one mark per particle with ghosts");
+  free_surface_ = std::move(marks);
+}
+
 void PlateWall::momentum(const double* vx, const double* vy, const double* rho, const double* p,
                          const double* mass, const std::int64_t* gid, const PlateWallConstants& k, double* ax,
                          double* ay) {
@@ -396,13 +403,16 @@ void PlateWall::momentum(const double* vx, const double* vy, const double* rho, 
     // eq. 8 with the ghosts' velocity mirrored about the wall at the particle's closest point:
     // u_g - u_i = -2 ((u_i - u_w).n) n
     const double un = normal_velocity(a, vx, vy);
+    const bool free_surface = !free_surface_.empty() && free_surface_[a] != 0;
     double sx = 0.0, sy = 0.0;
     for (int q = start_[a]; q < start_[a + 1]; ++q) {
       const int g = ghost_[q];
       const double ex = ex_[q], ey = ey_[q], f = f_[q];
       // Adami et al. (2012): pressure continued from the particle with the body force, not clamped at zero (as
       // the tank walls, docs/sph.md: a clamp tears particles in tension off the wall)
-      const double psum = pi + pi + rhoi * (k.body_x * ex + k.body_y * ey);
+      double psum = pi + pi + rhoi * (k.body_x * ex + k.body_y * ey);
+      // A particle at a free surface beside a face: pushes it, never pulls it (the gap behind it is the air's)
+      if (free_surface) psum = std::max(psum, 0.0);
       // eq. 4 pressure term: -(1/rho_i) (p_i + p_g) V_g grad_i W, grad_i W = -F e
       double scalar = psum * gvol_[g] * f * inv_rhoi;
       const double du_dot_e = -2.0 * un * (nx * ex + ny * ey);

@@ -26,6 +26,13 @@ inline constexpr double kRenormalisationMinDet = 1.0e-3;
 // Renormalised density gradient <grad rho>^L_i of owned particles (eqs. 6-7); out has 2 entries per particle.
 void density_gradient(const ParticleView& pv, const PairList& pairs, std::vector<double>& grad_rho);
 
+// The smallest eigenvalue of owned particle i's moment matrix B_i = sum_j V_j grad_i W_ij (x) r_ji over the water
+// (the inverse of eq. 7's L_i; walls and ghosts are not in the sum): about 1 inside the water, about 0.5 beside a
+// free surface or a wall, near 0 for a particle with no water around it. Marrone et al. (2010, J. Sci. Comput. 45)
+// take lambda <= kFreeSurfaceEigenvalue as the mark of a free-surface particle.
+double moment_min_eigenvalue(const ParticleView& pv, const PairList& pairs, int i);
+inline constexpr double kFreeSurfaceEigenvalue = 0.2;
+
 struct Rates {
   std::vector<double> drho, ax, ay, xsph_x, xsph_y;
   double max_mu = 0.0;     // max_ij h |u_ji . r_ji| / (r^2 + eta^2), for the time step

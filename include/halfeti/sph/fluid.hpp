@@ -92,6 +92,9 @@ class Fluid {
   // How the initial lattice sees the plate's faces (before the first set_plate_outline()).
   void set_plate_offsets(const LatticeOffsets& offsets) { plate_wall_.set_offsets(offsets); }
   const std::vector<PlateWallLoad>& plate_wall_loads() const { return plate_wall_.loads(); }
+  // Water separating from a face meets it as a free surface (PlateWall::set_free_surface), from the next
+  // compute_forces() on; off: every particle's ghosts continue its pressure.
+  void set_plate_free_surface(bool on) { plate_free_surface_ = on; }
 
   // Probes: collective, same value on every rank, bitwise independent of the rank count.
   // Kernel interpolation over fluid particles, first-order corrected (MLS; Shepard where the moments are singular).
@@ -110,7 +113,8 @@ class Fluid {
   // Water that left over the tank's open top (removed from the run, per unit depth [kg/m]), every rank.
   double spilled_mass() const { return spilled_mass_; }
   double kinetic_energy() const;
-  double max_density_variation() const;  // max |rho - rho0| / rho0
+  double max_density_variation() const;     // max |rho - rho0| / rho0
+  double plate_free_surface_count() const;  // particles beside the plate marked at the last compute_forces()
   double min_spacing() const;  // closest fluid pair at the last neighbour search, in dx (over every rank)
 
   const PhaseTimers& timers() const { return timers_; }
@@ -195,6 +199,8 @@ class Fluid {
   RateConstants constants_{};
   std::vector<double> extra_ax_, extra_ay_;
   PlateWall plate_wall_;
+  bool plate_free_surface_ = false;
+  std::size_t plate_free_surface_count_ = 0;
 
   double time_ = 0.0, dt_ = 0.0;
   long step_ = 0;

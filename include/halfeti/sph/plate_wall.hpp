@@ -76,6 +76,11 @@ class PlateWall {
   const PlateOutline& outline() const { return outline_; }
   // Ghost pairs of the owned particles [0, n) (positions x, y).
   void find_pairs(const double* x, const double* y, int n, const Kernel& kernel);
+  // Marks which of particles() (as find_pairs left them) stand at a free surface, the water around them gone
+  // (moment_min_eigenvalue below kFreeSurfaceEigenvalue): their pressure term over the ghosts pushes and never
+  // pulls, as water that has separated from a face meets it at the atmosphere's pressure (docs/coupling.md,
+  // section 21). Cleared by find_pairs; none marked unless called.
+  void set_free_surface(std::vector<unsigned char> marks);
   // eq. 4 pressure and viscous terms over the ghosts, and the walls' short-range repulsion within k.wall_range of a
   // face: adds to ax, ay (per owned particle) and records the loads (the plate takes the opposite of both).
   void momentum(const double* vx, const double* vy, const double* rho, const double* p, const double* mass,
@@ -122,6 +127,7 @@ class PlateWall {
   std::vector<int> particle_, start_, ghost_, seg_;
   std::vector<double> ex_, ey_, f_, nx_, ny_, eta_, distance_, px_, py_;
   std::vector<PlateWallLoad> loads_;
+  std::vector<unsigned char> free_surface_;  // per particle with ghosts, or empty
 
   bool hidden(double xi, double yi, double xg, double yg, int fibre) const;
   void closest_point(double xi, double yi, double reach, int& best, double& best_d, double& best_g,

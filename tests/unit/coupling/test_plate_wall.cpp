@@ -327,5 +327,44 @@ TEST(PlateWallRepulsion, PushesNoParticleIntoTheFloor) {
   EXPECT_LT(ay, -0.5 * k.wall_amplitude);
 }
 
+TEST(PlateWallFreeSurface, AParticleMarkedAtAFreeSurfacePushesTheFaceButNeverPullsIt) {
+  // A particle 0.8 dx beside the right face (beyond the repulsion's dx/2, at rest, no body force): only the ghosts'
+  // pressure term acts. In tension it is pulled towards the face and the face towards it, unless marked as at a
+  // free surface, where the term is zero; in compression it is pushed away alike, marked or not.
+  const PlateOutline o = paper_outline(0.0795);
+  PlateWall wall;
+  const Kernel kernel{KernelKind::kCubicSpline, 1.33 * kDx, 1.0};
+  wall.set_outline(o, kDx, kernel.support());
+  const PlateWallConstants k = repulsion_constants(kernel);
+  const double x = kRight + 0.8 * kDx, y = 26.5 * kDx, vx = 0.0, vy = 0.0, rho = 1000.0,
+               mass = 1000.0 * kDx * kDx;
+  const std::int64_t gid = 5;
+  auto force = [&](double p, bool marked, double& ax, double& plate_fx) {
+    ax = 0.0;
+    double ay = 0.0;
+    wall.find_pairs(&x, &y, 1, kernel);
+    EXPECT_EQ(wall.particles().size(), 1u);
+    if (marked) wall.set_free_surface({1});
+    wall.momentum(&vx, &vy, &rho, &p, &mass, &gid, k, &ax, &ay);
+    EXPECT_NEAR(ay, 0.0,
+                1e-9 * std::abs(ax) + 1e-12);  // on a lattice row beside a straight face: normal only
+    plate_fx = 0.0;
+    for (const auto& l : wall.loads()) plate_fx += l.fx;
+  };
+  double ax = 0.0, fx = 0.0;
+  force(-1.0e5, false, ax, fx);
+  EXPECT_LT(ax, 0.0) << "in tension and not marked: pulled towards the face";
+  EXPECT_GT(fx, 0.0) << "and the face towards the particle";
+  force(-1.0e5, true, ax, fx);
+  EXPECT_EQ(ax, 0.0) << "marked: no pull";
+  EXPECT_EQ(fx, 0.0);
+  double ax_marked = 0.0, fx_marked = 0.0;
+  force(1.0e5, false, ax, fx);
+  force(1.0e5, true, ax_marked, fx_marked);
+  EXPECT_GT(ax, 0.0) << "in compression: pushed off the face";
+  EXPECT_EQ(ax_marked, ax);
+  EXPECT_EQ(fx_marked, fx);
+}
+
 }  // namespace
 }  // namespace halfeti::sph
