@@ -35,14 +35,18 @@ void density_gradient(const ParticleView& pv, const PairList& pairs, std::vector
   }
 }
 
-double moment_min_eigenvalue(const ParticleView& pv, const PairList& pairs, int i) {
+double moment_min_eigenvalue(const ParticleView& pv, const PairList& pairs, const PairList& ghost_pairs,
+                             const WallGhosts& ghosts, int i) {
   double b00 = 0, b01 = 0, b11 = 0;  // B is symmetric: grad_i W_ij = -F r_ji
-  for_each_neighbour(pairs, i, [&](int j, int k) {
-    const double vf = -pv.volume[j] * pairs.f[k], ex = pairs.ex[k], ey = pairs.ey[k];
+  auto add = [&](double v, const PairList& l, int k) {
+    const double vf = -v * l.f[k], ex = l.ex[k], ey = l.ey[k];
     b00 += vf * ex * ex;
     b01 += vf * ex * ey;
     b11 += vf * ey * ey;
-  });
+  };
+  for_each_neighbour(pairs, i, [&](int j, int k) { add(pv.volume[j], pairs, k); });
+  if (!ghost_pairs.start.empty())
+    for_each_neighbour(ghost_pairs, i, [&](int g, int k) { add(ghosts.volume[g], ghost_pairs, k); });
   const double mean = 0.5 * (b00 + b11), half = 0.5 * (b00 - b11);
   return mean - std::sqrt(half * half + b01 * b01);
 }

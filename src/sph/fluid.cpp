@@ -266,7 +266,8 @@ void Fluid::compute_forces() {
         std::vector<unsigned char> marks;
         marks.reserve(plate_wall_.particles().size());
         for (const int i : plate_wall_.particles()) {
-          const bool free = moment_min_eigenvalue(pv, pairs_, i) <= kFreeSurfaceEigenvalue;
+          const bool free =
+              moment_min_eigenvalue(pv, pairs_, ghost_pairs_, ghosts_, i) <= kFreeSurfaceEigenvalue;
           marks.push_back(free ? 1 : 0);
           plate_free_surface_count_ += free ? 1 : 0;
         }

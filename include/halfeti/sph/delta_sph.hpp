@@ -27,10 +27,12 @@ inline constexpr double kRenormalisationMinDet = 1.0e-3;
 void density_gradient(const ParticleView& pv, const PairList& pairs, std::vector<double>& grad_rho);
 
 // The smallest eigenvalue of owned particle i's moment matrix B_i = sum_j V_j grad_i W_ij (x) r_ji over the water
-// (the inverse of eq. 7's L_i; walls and ghosts are not in the sum): about 1 inside the water, about 0.5 beside a
-// free surface or a wall, near 0 for a particle with no water around it. Marrone et al. (2010, J. Sci. Comput. 45)
-// take lambda <= kFreeSurfaceEigenvalue as the mark of a free-surface particle.
-double moment_min_eigenvalue(const ParticleView& pv, const PairList& pairs, int i);
+// and the tank walls' ghosts (the inverse of eq. 7's L_i with the walls, as Marrone et al. 2010 count their fixed
+// ghosts; the plate's ghosts are not in it): about 1 inside the water and beside a tank wall, about 0.5 at a free
+// surface, near 0 for a particle with neither water nor a tank wall around it. Marrone et al. (2010, J. Sci.
+// Comput. 45) take lambda <= kFreeSurfaceEigenvalue as the mark of a free-surface particle.
+double moment_min_eigenvalue(const ParticleView& pv, const PairList& pairs, const PairList& ghost_pairs,
+                             const WallGhosts& ghosts, int i);
 inline constexpr double kFreeSurfaceEigenvalue = 0.2;
 
 struct Rates {

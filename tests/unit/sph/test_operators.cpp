@@ -127,14 +127,38 @@ TEST(FreeSurfaceMark, MarronesEigenvalueInsideOnAnEdgeAtACornerAndAlone) {
   const int n = static_cast<int>(l.x.size());
   const ParticleView pv{l.x.data(), l.y.data(), l.vx.data(), l.vy.data(), l.rho.data(),
                         l.m.data(), l.p.data(), vol.data(),  n,           n};
-  const double inside = moment_min_eigenvalue(pv, l.pairs, 6 * 12 + 6);
-  const double edge = moment_min_eigenvalue(pv, l.pairs, 6 * 12 + 0);
-  const double corner = moment_min_eigenvalue(pv, l.pairs, 0);
+  const PairList none = PairList::none(n);  // no tank walls here
+  const WallGhosts no_walls;
+  const double inside = moment_min_eigenvalue(pv, l.pairs, none, no_walls, 6 * 12 + 6);
+  const double edge = moment_min_eigenvalue(pv, l.pairs, none, no_walls, 6 * 12 + 0);
+  const double corner = moment_min_eigenvalue(pv, l.pairs, none, no_walls, 0);
   EXPECT_NEAR(inside, 1.0, 0.03);
   EXPECT_NEAR(edge, 0.5, 0.1);
   EXPECT_GT(corner, 0.25 - 1.0 / (2.0 * M_PI));
   EXPECT_LT(corner, edge - 0.1);
   EXPECT_GT(corner, kFreeSurfaceEigenvalue);
+  // The tank walls' ghosts count as water (their pressure continues the particle's): a left wall's ghost rows at
+  // x = -(m + 1/2) dx make the left edge an inside particle again, and the corner about an edge particle.
+  WallGhosts walls;
+  for (int m = 0; m < 3; ++m)
+    for (int j = -3; j < 15; ++j) {
+      walls.x.push_back(-(m + 0.5) * dx);
+      walls.y.push_back((j + 0.5) * dx);
+      walls.volume.push_back(dx * dx);
+    }
+  PairList ghost_pairs;
+  ghost_pairs.start.push_back(0);
+  const KernelEvaluator eval(k);
+  for (int i = 0; i < n; ++i) {
+    for (std::size_t g = 0; g < walls.size(); ++g) {
+      const double ex = walls.x[g] - l.x[i], ey = walls.y[g] - l.y[i], r = std::hypot(ex, ey);
+      if (r < k.support()) ghost_pairs.push(static_cast<int>(g), ex, ey, r, eval);
+    }
+    ghost_pairs.start.push_back(static_cast<int>(ghost_pairs.size()));
+  }
+  EXPECT_NEAR(moment_min_eigenvalue(pv, l.pairs, ghost_pairs, walls, 6 * 12 + 0), inside, 1e-9);
+  EXPECT_NEAR(moment_min_eigenvalue(pv, l.pairs, ghost_pairs, walls, 0), edge,
+              0.1);  // the ghosts reach below
   // A particle alone, and one whose only neighbour is 2.1 dx away (the separated particle of docs/coupling.md,
   // section 19): marked.
   auto pair = make_lattice(k, 2.1 * dx, 2, 1, 0.0, 0.0);
@@ -149,7 +173,7 @@ TEST(FreeSurfaceMark, MarronesEigenvalueInsideOnAnEdgeAtACornerAndAlone) {
                          vol2.data(),
                          2,
                          2};
-  EXPECT_LT(moment_min_eigenvalue(pv2, pair.pairs, 0), kFreeSurfaceEigenvalue);
+  EXPECT_LT(moment_min_eigenvalue(pv2, pair.pairs, PairList::none(2), no_walls, 0), kFreeSurfaceEigenvalue);
   auto lone = make_lattice(k, dx, 1, 1, 0.0, 0.0);
   const ParticleView pv1{lone.x.data(),
                          lone.y.data(),
@@ -161,7 +185,7 @@ TEST(FreeSurfaceMark, MarronesEigenvalueInsideOnAnEdgeAtACornerAndAlone) {
                          vol2.data(),
                          1,
                          1};
-  EXPECT_EQ(moment_min_eigenvalue(pv1, lone.pairs, 0), 0.0);
+  EXPECT_EQ(moment_min_eigenvalue(pv1, lone.pairs, PairList::none(1), no_walls, 0), 0.0);
 }
 
 TEST(DeltaSph, ArtificialViscosityDissipates) {
