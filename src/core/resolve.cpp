@@ -79,16 +79,26 @@ class Resolver {
     }
 
     std::vector<std::string> meant;  // keys a near-miss spelling stood for: not reported missing as well
+    std::vector<std::string> names;
+    for (const Key* k : keys) names.push_back(k->name());
+    auto is_known = [&](const std::string& name) {
+      return std::any_of(keys.begin(), keys.end(), [&](const Key* k) { return k->name() == name; });
+    };
+    // A misspelt discriminator (kind) leaves its default variant in force, under which the variant's own keys are
+    // unknown too: only the misspelling is reported, the rest follows from it.
+    bool discriminator_misspelt = false;
+    const std::string& dkey = schema.discriminator_key();
+    if (!dkey.empty() && !in[dkey].IsDefined())
+      for (auto it = in.begin(); it != in.end(); ++it)
+        if (!is_known(it->first.Scalar()) && closest_name(it->first.Scalar(), names) == dkey)
+          discriminator_misspelt = true;
     for (auto it = in.begin(); it != in.end(); ++it) {
       const std::string name = it->first.Scalar();
-      const bool known =
-          std::any_of(keys.begin(), keys.end(), [&](const Key* k) { return k->name() == name; });
-      if (known) continue;
-      std::vector<std::string> names;
-      for (const Key* k : keys) names.push_back(k->name());
+      if (is_known(name)) continue;
+      const std::string near = closest_name(name, names);
+      if (discriminator_misspelt && near != dkey) continue;
       std::string msg = "unknown key '" + join_path(path, name) + "'";
       if (!variant_name.empty()) msg += " for " + schema.discriminator_key() + " '" + variant_name + "'";
-      const std::string near = closest_name(name, names);
       if (!near.empty()) {
         msg += "; did you mean '" + near + "'?";
         meant.push_back(near);

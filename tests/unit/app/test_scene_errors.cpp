@@ -40,6 +40,9 @@ const Case kCases[] = {
     {"unknown choice", "scene: {name: s, end_time: 1}\nexcitation: {kind: sine}\n",
      "bad.yaml:2:20: excitation.kind: expected one of none, sine_pulse, cosine_pulse, record, found 'sine'; "
      "did you mean 'none'?"},
+    {"misspelt kind (its default's unknown keys follow from it: not reported)",
+     "scene: {name: s, end_time: 1}\nexcitation: {kindx: cosine_pulse, amplitude: 3.0, period: 0.4}\n",
+     "bad.yaml:2:14: unknown key 'excitation.kindx' for kind 'none'; did you mean 'kind'?"},
     {"pulse without period", "scene: {name: s, end_time: 1}\nexcitation: {kind: sine_pulse, amplitude: 2}\n",
      "bad.yaml:2:13: excitation.period: required key missing: expected a number > 0 and <= 100 (s)"},
     {"key of another kind", "scene: {name: s, end_time: 1}\nexcitation: {kind: none, period: 1}\n",
