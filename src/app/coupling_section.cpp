@@ -119,13 +119,13 @@ std::shared_ptr<const Schema> coupling_schema() {
                "(false: at rest, the still-water validation's setting; the paper scenes use true, stable "
                "with the interface added mass)")
                .def(false));
-    s->add(
-        Key::boolean("plate_wall_free_surface",
-                     "a particle beside a face with the water around it gone (Marrone et al. 2010's "
-                     "free-surface mark) pushes the face but does not pull it: water separating from a face "
-                     "as a free surface (false: the ghosts continue every particle's pressure, tension "
-                     "included)")
-            .def(false));
+    s->add(Key::boolean(
+               "plate_wall_free_surface",
+               "a particle beside a face with the water around it gone (Marrone et al. 2010's "
+               "free-surface mark) pushes the face but does not pull it, and does not expand as it leaves "
+               "it: water separating from a face as a free surface (false: the ghosts continue every "
+               "particle's pressure, tension included)")
+               .def(false));
     s->add(Key::choice(
                "plate_wall_exchange",
                "the plate-water exchange: extrapolated (explicit, the water's load and the face's velocity "

@@ -452,6 +452,8 @@ void PlateWall::continuity(const double* vx, const double* vy, const double* rho
       const double n_dot_grad = -f_[q] * (nx * ex_[q] + ny * ey_[q]);
       d += 2.0 * rho[i] * gvol_[ghost_[q]] * un * n_dot_grad;  // eq. 3 first term over the ghosts
     }
+    // A particle at a free surface leaving the face opens a gap (the air's), it does not expand
+    if (!free_surface_.empty() && free_surface_[a] != 0) d = std::max(d, 0.0);
     drho[i] += d;
   }
 }

@@ -78,8 +78,9 @@ class PlateWall {
   void find_pairs(const double* x, const double* y, int n, const Kernel& kernel);
   // Marks which of particles() (as find_pairs left them) stand at a free surface, the water around them gone
   // (moment_min_eigenvalue below kFreeSurfaceEigenvalue): their pressure term over the ghosts pushes and never
-  // pulls, as water that has separated from a face meets it at the atmosphere's pressure (docs/coupling.md,
-  // section 21). Cleared by find_pairs; none marked unless called.
+  // pulls, and their density does not fall as they leave the face (the gap they open is the air's), as water that
+  // has separated from a face meets it at the atmosphere's pressure (docs/coupling.md, section 21). Cleared by
+  // find_pairs; none marked unless called.
   void set_free_surface(std::vector<unsigned char> marks);
   // eq. 4 pressure and viscous terms over the ghosts, and the walls' short-range repulsion within k.wall_range of a
   // face: adds to ax, ay (per owned particle) and records the loads (the plate takes the opposite of both).

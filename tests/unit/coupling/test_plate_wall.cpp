@@ -366,5 +366,28 @@ TEST(PlateWallFreeSurface, AParticleMarkedAtAFreeSurfacePushesTheFaceButNeverPul
   EXPECT_EQ(fx_marked, fx);
 }
 
+TEST(PlateWallFreeSurface, AParticleMarkedAtAFreeSurfaceLeavingTheFaceDoesNotExpand) {
+  // The same particle moving off the face at 1 m/s: the ghosts' continuity term (eq. 3, velocity mirrored) lowers
+  // its density unless it is marked, when the gap it leaves is the air's; moving onto the face it is compressed
+  // alike, marked or not.
+  const PlateOutline o = paper_outline(0.0795);
+  PlateWall wall;
+  const Kernel kernel{KernelKind::kCubicSpline, 1.33 * kDx, 1.0};
+  wall.set_outline(o, kDx, kernel.support());
+  const double x = kRight + 0.8 * kDx, y = 26.5 * kDx, vy = 0.0, rho = 1000.0;
+  auto rate = [&](double vx, bool marked) {
+    wall.find_pairs(&x, &y, 1, kernel);
+    EXPECT_EQ(wall.particles().size(), 1u);
+    if (marked) wall.set_free_surface({1});
+    double drho = 0.0;
+    wall.continuity(&vx, &vy, &rho, &drho);
+    return drho;
+  };
+  EXPECT_LT(rate(1.0, false), 0.0) << "leaving the face, not marked: expands";
+  EXPECT_EQ(rate(1.0, true), 0.0) << "marked: does not";
+  EXPECT_GT(rate(-1.0, false), 0.0) << "onto the face: compressed";
+  EXPECT_EQ(rate(-1.0, true), rate(-1.0, false));
+}
+
 }  // namespace
 }  // namespace halfeti::sph
