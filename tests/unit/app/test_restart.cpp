@@ -1,6 +1,7 @@
 // Restart from a checkpoint through the program (mpirun, as a user runs it): a run stopped at some step and continued
 // with --restart is bit for bit the run that never stopped, on the same rank count and on another (1 -> 2, 3 -> 1,
-// 4 -> 2), for the water alone and for the coupled paper scene with cables; the stops a cluster job meets (a
+// 4 -> 2), for the water alone and for the coupled paper scene with cables (and for the dam break onto the plate
+// with the free-surface mark, 3 -> 1); the stops a cluster job meets (a
 // signal, --max-wall) leave a checkpoint and a summary that say so; a restart that would change the physics, a
 // folder that holds another run, a file that is no checkpoint are one clear error each; a full disk is an I/O error
 // (exit status 6) naming the file and the reason, with no half-written file left.
@@ -14,6 +15,7 @@
 #include <numeric>
 
 #include "halfeti/io/checkpoint.hpp"
+#include "halfeti/io/probe_writer.hpp"
 #include "run_scene.hpp"
 
 using namespace halfeti;
@@ -41,6 +43,14 @@ const Case kImplicit{kCoupled.scene,
                          " --set coupling.plate_wall_exchange=implicit --set coupling.added_mass=none"
                          " --set structure.newmark_gamma=0.5 --set structure.newmark_beta=0.25",
                      0.1, 0.05};
+
+// The dam break onto the plate at L/40 with water that has left a face meeting it as a free surface
+// (coupling.plate_wall_free_surface, docs/coupling.md section 21; c0 100 m/s, where it runs the explicit exchange):
+// particles are marked at 0.126-0.129, 0.132 and 0.138-0.140 s, on both sides of the restart.
+const Case kFreeSurface{test::source_path("inputs/validation/dambreak_plate.yaml"),
+                        "--set fluid.sound_speed=100 --set coupling.plate_wall_free_surface=true"
+                        " --set output.field_interval=0 --set output.checkpoint_keep=0",
+                        0.14, 0.128};
 
 std::string end_time(double t) {
   return " --set scene.end_time=" + std::to_string(t);
@@ -96,11 +106,13 @@ void expect_same_state(const std::string& a, const std::string& b) {
 
 // The reference run (np 2, never stopped), then for each rank pair a first leg to the middle and a second leg from
 // its checkpoint, into another folder, to the end.
-void expect_restarts_bit_for_bit(const Case& c, const std::string& name) {
+void expect_restarts_bit_for_bit(const Case& c, const std::string& name,
+                                 const std::vector<std::pair<int, int>>& rank_pairs = {
+                                     {1, 2}, {3, 1}, {4, 2}}) {
   const std::string ref = test::binary_path("restart_" + name + "_ref");
   ASSERT_EQ(test::run_scene(c.scene, ref, c.args + end_time(c.end), 2), 0)
       << test::read_text(ref + ".stderr");
-  for (const auto& [first, second] : std::vector<std::pair<int, int>>{{1, 2}, {3, 1}, {4, 2}}) {
+  for (const auto& [first, second] : rank_pairs) {
     const std::string tag = name + "_" + std::to_string(first) + "to" + std::to_string(second);
     const std::string leg1 = test::binary_path("restart_" + tag + "_a"),
                       leg2 = test::binary_path("restart_" + tag + "_b");
@@ -142,6 +154,18 @@ TEST(Restart, ConvergedExchangeContinuesBitForBitOnOtherRankCounts) {
   const auto at = s.find("\"most_in_a_step\": ");
   ASSERT_NE(at, std::string::npos) << "summary.json has no exchange counts";
   EXPECT_GT(std::stoi(s.substr(at + 18)), 1);
+}
+
+TEST(Restart, PlateFreeSurfaceMarkContinuesBitForBitOnOtherRankCounts) {
+  // One pair (3 ranks, then 1, against 2): the scene is 3,200 particles for 13,000 steps.
+  expect_restarts_bit_for_bit(kFreeSurface, "free_surface", {{3, 1}});
+  // The mark acted, before and after the restart.
+  const auto probes = io::read_probe_csv(test::binary_path("restart_free_surface_ref") + "/probes.csv");
+  const auto t = probes.column("t"), marked = probes.column("plate_free_surface");
+  int before = 0, after = 0;
+  for (std::size_t k = 0; k < t.size(); ++k) (t[k] < kFreeSurface.middle ? before : after) += marked[k] > 0.0;
+  EXPECT_GT(before, 0);
+  EXPECT_GT(after, 0);
 }
 
 TEST(Restart, MaxWallStopsResumablyAndTheRunContinuesInItsOwnFolder) {
