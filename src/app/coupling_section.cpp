@@ -122,9 +122,9 @@ std::shared_ptr<const Schema> coupling_schema() {
     s->add(Key::boolean(
                "plate_wall_free_surface",
                "a particle beside a face with the water around it gone (Marrone et al. 2010's "
-               "free-surface mark) pushes the face but does not pull it, and does not expand as it leaves "
-               "it: water separating from a face as a free surface (false: the ghosts continue every "
-               "particle's pressure, tension included)")
+               "free-surface mark) is held at the atmosphere's pressure or above, pushes the face but does "
+               "not pull it, and does not expand as it leaves it: water separating from a face as a free "
+               "surface (false: the ghosts continue every particle's pressure, tension included)")
                .def(false));
     s->add(Key::choice(
                "plate_wall_exchange",

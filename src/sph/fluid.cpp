@@ -218,6 +218,24 @@ void Fluid::compute_forces() {
   }
   const ParticleView pv{x_.data(),    y_.data(), vx_.data(),     vy_.data(), rho_.data(),
                         mass_.data(), p_.data(), volume_.data(), n_owned_,   n_local_};
+  plate_free_surface_count_ = 0;
+  if (!plate_wall_.empty()) {  // the plate's surface as a moving wall (plate_wall.hpp): its ghost pairs
+    ScopedTimer t(timers_, "neighbours");
+    plate_wall_.find_pairs(x_.data(), y_.data(), n_owned_, kernel_);
+    if (plate_free_surface_) {  // Marrone et al. (2010): the water around the particle is gone
+      std::vector<unsigned char> marks;
+      marks.reserve(plate_wall_.particles().size());
+      for (const int i : plate_wall_.particles()) {
+        const bool free =
+            moment_min_eigenvalue(pv, pairs_, ghost_pairs_, ghosts_, i) <= kFreeSurfaceEigenvalue;
+        marks.push_back(free ? 1 : 0);
+        plate_free_surface_count_ += free ? 1 : 0;
+        if (free) p_[i] = std::max(p_[i], 0.0);  // at the atmosphere's pressure or above
+      }
+      plate_wall_.set_free_surface(std::move(marks));
+      halo_plan_.update(p_, n_owned_, 1);  // the neighbours on other ranks see the same pressure
+    }
+  }
   const bool use_delta = params_.scheme == Scheme::kDeltaSph && params_.delta > 0.0;
   // The wall ghosts' pressure is continued along the walls with the owned particles' gradient (eqs. 6, 9), so
   // the standard scheme needs the gradient pass too (without its halo update: only owned particles read it).
@@ -260,19 +278,6 @@ void Fluid::compute_forces() {
                         {params_.tank_length, params_.tank_height, params_.lid}, dx_,
                         params_.kinematic_viscosity, rates_.ax.data(), rates_.ay.data());
     if (!plate_wall_.empty()) {  // the plate's surface as a moving wall (plate_wall.hpp)
-      plate_wall_.find_pairs(x_.data(), y_.data(), n_owned_, kernel_);
-      plate_free_surface_count_ = 0;
-      if (plate_free_surface_) {  // Marrone et al. (2010): the water around the particle is gone
-        std::vector<unsigned char> marks;
-        marks.reserve(plate_wall_.particles().size());
-        for (const int i : plate_wall_.particles()) {
-          const bool free =
-              moment_min_eigenvalue(pv, pairs_, ghost_pairs_, ghosts_, i) <= kFreeSurfaceEigenvalue;
-          marks.push_back(free ? 1 : 0);
-          plate_free_surface_count_ += free ? 1 : 0;
-        }
-        plate_wall_.set_free_surface(std::move(marks));
-      }
       PlateWallConstants pk{dx_, kernel_.h, k.rho0, c0_, k.alpha, k.body_x, k.body_y};
       pk.wall_amplitude = k.wall_amplitude;  // the tank walls' repulsion on the faces too
       pk.wall_range = k.wall_range;

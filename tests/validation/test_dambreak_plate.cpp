@@ -79,7 +79,7 @@ TEST(DambreakPlate, TipFollowsThePublishedResultsAndTheEnergyBalanceCloses) {
 
 // The same benchmark at c0 = 100 m/s with water that has left a face meeting it as a free surface
 // (coupling.plate_wall_free_surface, docs/coupling.md section 21): the explicit exchange, which stops at this sound
-// speed without the mark (0.176 s), runs; measured 45.7 mm at 0.246 s, 18.6 mm at 0.45 s.
+// speed without the mark (0.176 s), runs; measured 45.9 mm at 0.248 s, 19.7 mm at 0.45 s.
 TEST(DambreakPlate, FreeSurfaceMarkAtAFasterSoundFollowsThePublishedResults) {
   expect_published_tip_and_closed_balance(
       test::binary_path("validation_dambreak_plate_free_surface"),

@@ -92,8 +92,9 @@ class Fluid {
   // How the initial lattice sees the plate's faces (before the first set_plate_outline()).
   void set_plate_offsets(const LatticeOffsets& offsets) { plate_wall_.set_offsets(offsets); }
   const std::vector<PlateWallLoad>& plate_wall_loads() const { return plate_wall_.loads(); }
-  // Water separating from a face meets it as a free surface (PlateWall::set_free_surface), from the next
-  // compute_forces() on; off: every particle's ghosts continue its pressure.
+  // Water separating from a face meets it as a free surface (PlateWall::set_free_surface; the marked particles'
+  // pressure floored at zero in every sum, their halo copies too), from the next compute_forces() on; off: every
+  // particle's ghosts continue its pressure.
   void set_plate_free_surface(bool on) { plate_free_surface_ = on; }
 
   // Probes: collective, same value on every rank, bitwise independent of the rank count.

@@ -46,7 +46,7 @@ const Case kImplicit{kCoupled.scene,
 
 // The dam break onto the plate at L/40 with water that has left a face meeting it as a free surface
 // (coupling.plate_wall_free_surface, docs/coupling.md section 21; c0 100 m/s, where it runs the explicit exchange):
-// particles are marked at 0.126-0.129, 0.132 and 0.138-0.140 s, on both sides of the restart.
+// particles are marked at 0.126-0.129, 0.132 and 0.139-0.141 s, on both sides of the restart.
 const Case kFreeSurface{test::source_path("inputs/validation/dambreak_plate.yaml"),
                         "--set fluid.sound_speed=100 --set coupling.plate_wall_free_surface=true"
                         " --set output.field_interval=0 --set output.checkpoint_keep=0",
