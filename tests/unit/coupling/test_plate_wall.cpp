@@ -230,6 +230,16 @@ TEST(PlateWallRows, ReachTheFootOfBothFacesOfABentPlate) {
   EXPECT_LT(lowest, 0.53 * kDx) << "the lowest solid ghost is " << lowest / kDx << " dx above the floor";
 }
 
+// The paper's kernel (h = 1.33 dx) and its plate standing in the tank (top on a lattice line), as a wall.
+Kernel paper_kernel() {
+  return Kernel{KernelKind::kCubicSpline, 1.33 * kDx, 1.0};
+}
+PlateWall paper_wall(const Kernel& kernel) {
+  PlateWall wall;
+  wall.set_outline(paper_outline(0.0795), kDx, kernel.support());
+  return wall;
+}
+
 // The constants of the repulsion tests: the tank walls' repulsion (fluid.wall_repulsion 0.01, c0 20 m/s, range dx/2)
 // in a 0.3 m x 0.2 m tank.
 PlateWallConstants repulsion_constants(const Kernel& kernel) {
@@ -251,10 +261,8 @@ TEST(PlateWallRepulsion, AsTheTankWallsWithinHalfASpacingOfAFaceAndTheOppositeOn
   // normal from its closest point (walls.cpp's profile summed along a continuous wall is one), none from dx/2 on,
   // and the plate the opposite force, shared by the segment's two points. Beside the right face, above the top and
   // at the foot's corner with the floor (pushed out of the face, not into the floor).
-  const PlateOutline o = paper_outline(0.0795);
-  PlateWall wall;
-  const Kernel kernel{KernelKind::kCubicSpline, 1.33 * kDx, 1.0};
-  wall.set_outline(o, kDx, kernel.support());
+  const Kernel kernel = paper_kernel();
+  PlateWall wall = paper_wall(kernel);
   const PlateWallConstants k = repulsion_constants(kernel);
   struct Case {
     double x, y, nx, ny, d;
@@ -331,10 +339,8 @@ TEST(PlateWallFreeSurface, AParticleMarkedAtAFreeSurfacePushesTheFaceButNeverPul
   // A particle 0.8 dx beside the right face (beyond the repulsion's dx/2, at rest, no body force): only the ghosts'
   // pressure term acts. In tension it is pulled towards the face and the face towards it, unless marked as at a
   // free surface, where the term is zero; in compression it is pushed away alike, marked or not.
-  const PlateOutline o = paper_outline(0.0795);
-  PlateWall wall;
-  const Kernel kernel{KernelKind::kCubicSpline, 1.33 * kDx, 1.0};
-  wall.set_outline(o, kDx, kernel.support());
+  const Kernel kernel = paper_kernel();
+  PlateWall wall = paper_wall(kernel);
   const PlateWallConstants k = repulsion_constants(kernel);
   const double x = kRight + 0.8 * kDx, y = 26.5 * kDx, vx = 0.0, vy = 0.0, rho = 1000.0,
                mass = 1000.0 * kDx * kDx;
@@ -370,10 +376,8 @@ TEST(PlateWallFreeSurface, AParticleMarkedAtAFreeSurfaceLeavingTheFaceDoesNotExp
   // The same particle moving off the face at 1 m/s: the ghosts' continuity term (eq. 3, velocity mirrored) lowers
   // its density unless it is marked, when the gap it leaves is the air's; moving onto the face it is compressed
   // alike, marked or not.
-  const PlateOutline o = paper_outline(0.0795);
-  PlateWall wall;
-  const Kernel kernel{KernelKind::kCubicSpline, 1.33 * kDx, 1.0};
-  wall.set_outline(o, kDx, kernel.support());
+  const Kernel kernel = paper_kernel();
+  PlateWall wall = paper_wall(kernel);
   const double x = kRight + 0.8 * kDx, y = 26.5 * kDx, vy = 0.0, rho = 1000.0;
   auto rate = [&](double vx, bool marked) {
     wall.find_pairs(&x, &y, 1, kernel);
