@@ -391,6 +391,10 @@ void PlateWall::set_free_surface(std::vector<unsigned char> marks) {
   free_surface_ = std::move(marks);
 }
 
+std::size_t PlateWall::free_surface_count() const {
+  return static_cast<std::size_t>(std::count(free_surface_.begin(), free_surface_.end(), 1));
+}
+
 void PlateWall::momentum(const double* vx, const double* vy, const double* rho, const double* p,
                          const double* mass, const std::int64_t* gid, const PlateWallConstants& k, double* ax,
                          double* ay) {
@@ -403,7 +407,7 @@ void PlateWall::momentum(const double* vx, const double* vy, const double* rho, 
     // eq. 8 with the ghosts' velocity mirrored about the wall at the particle's closest point:
     // u_g - u_i = -2 ((u_i - u_w).n) n
     const double un = normal_velocity(a, vx, vy);
-    const bool free_surface = !free_surface_.empty() && free_surface_[a] != 0;
+    const bool free_surface = marked(a);
     double sx = 0.0, sy = 0.0;
     for (int q = start_[a]; q < start_[a + 1]; ++q) {
       const int g = ghost_[q];
@@ -453,7 +457,7 @@ void PlateWall::continuity(const double* vx, const double* vy, const double* rho
       d += 2.0 * rho[i] * gvol_[ghost_[q]] * un * n_dot_grad;  // eq. 3 first term over the ghosts
     }
     // A particle at a free surface leaving the face opens a gap (the air's), it does not expand
-    if (!free_surface_.empty() && free_surface_[a] != 0) d = std::max(d, 0.0);
+    if (marked(a)) d = std::max(d, 0.0);
     drho[i] += d;
   }
 }

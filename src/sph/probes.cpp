@@ -159,7 +159,7 @@ double Fluid::max_density_variation() const {
 }
 
 double Fluid::plate_free_surface_count() const {
-  long long n = static_cast<long long>(plate_free_surface_count_);
+  long long n = static_cast<long long>(plate_wall_.free_surface_count());
   MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPI_LONG_LONG, MPI_SUM, comm_.get());
   return static_cast<double>(n);
 }

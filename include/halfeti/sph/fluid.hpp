@@ -201,7 +201,6 @@ class Fluid {
   std::vector<double> extra_ax_, extra_ay_;
   PlateWall plate_wall_;
   bool plate_free_surface_ = false;
-  std::size_t plate_free_surface_count_ = 0;
 
   double time_ = 0.0, dt_ = 0.0;
   long step_ = 0;

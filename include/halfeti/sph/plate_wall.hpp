@@ -82,6 +82,7 @@ class PlateWall {
   // has separated from a face meets it at the atmosphere's pressure (docs/coupling.md, section 21). Cleared by
   // find_pairs; none marked unless called.
   void set_free_surface(std::vector<unsigned char> marks);
+  std::size_t free_surface_count() const;  // how many of particles() are marked
   // eq. 4 pressure and viscous terms over the ghosts, and the walls' short-range repulsion within k.wall_range of a
   // face: adds to ax, ay (per owned particle) and records the loads (the plate takes the opposite of both).
   void momentum(const double* vx, const double* vy, const double* rho, const double* p, const double* mass,
@@ -134,6 +135,7 @@ class PlateWall {
   void closest_point(double xi, double yi, double reach, int& best, double& best_d, double& best_g,
                      double& best_eta) const;
   double normal_velocity(std::size_t a, const double* vx, const double* vy) const;
+  bool marked(std::size_t a) const { return !free_surface_.empty() && free_surface_[a] != 0; }
   void offset_outline(const PlateOutline& o, double dx);
 };
 
