@@ -124,8 +124,8 @@ std::shared_ptr<const Schema> coupling_schema() {
                "a particle beside a face with the water around it gone (Marrone et al. 2010's "
                "free-surface mark) is held at the atmosphere's pressure or above, pushes the face but does "
                "not pull it, and does not expand as it leaves it: water separating from a face as a free "
-               "surface; docs/coupling.md section 21 (false: the ghosts continue every particle's pressure, tension "
-               "included)")
+               "surface; docs/coupling.md section 21 (false: the ghosts continue every particle's pressure, "
+               "tension included)")
                .def(true));
     s->add(Key::choice(
                "plate_wall_exchange",
