@@ -218,25 +218,26 @@ void Fluid::compute_forces() {
   }
   const ParticleView pv{x_.data(),    y_.data(), vx_.data(),     vy_.data(), rho_.data(),
                         mass_.data(), p_.data(), volume_.data(), n_owned_,   n_local_};
-  if (!plate_wall_.empty()) {  // the plate's surface as a moving wall (plate_wall.hpp): its ghost pairs
-    ScopedTimer t(timers_, "neighbours");
-    plate_wall_.find_pairs(x_.data(), y_.data(), n_owned_, kernel_);
-    if (plate_free_surface_) {  // Marrone et al. (2010): the water around the particle is gone
-      std::vector<unsigned char> marks;
-      marks.reserve(plate_wall_.particles().size());
-      for (const int i : plate_wall_.particles()) {
-        const bool free =
-            moment_min_eigenvalue(pv, pairs_, ghost_pairs_, ghosts_, i) <= kFreeSurfaceEigenvalue;
-        marks.push_back(free ? 1 : 0);
-        if (free) p_[i] = std::max(p_[i], 0.0);  // at the atmosphere's pressure or above
+  if (!plate_wall_.empty()) {  // the plate's surface as a moving wall (plate_wall.hpp)
+    {
+      ScopedTimer t(timers_, "neighbours");  // its ghost pairs
+      plate_wall_.find_pairs(x_.data(), y_.data(), n_owned_, kernel_);
+      if (plate_free_surface_) {  // Marrone et al. (2010): the water around the particle is gone
+        std::vector<unsigned char> marks;
+        marks.reserve(plate_wall_.particles().size());
+        for (const int i : plate_wall_.particles()) {
+          const bool free =
+              moment_min_eigenvalue(pv, pairs_, ghost_pairs_, ghosts_, i) <= kFreeSurfaceEigenvalue;
+          marks.push_back(free ? 1 : 0);
+          if (free) p_[i] = std::max(p_[i], 0.0);  // at the atmosphere's pressure or above
+        }
+        plate_wall_.set_free_surface(std::move(marks));
       }
-      plate_wall_.set_free_surface(std::move(marks));
     }
-  }
-  if (plate_free_surface_ && !plate_wall_.empty()) {
-    ScopedTimer t(timers_, "halo");
-    halo_plan_.update(p_, n_owned_,
-                      1);  // the marked particles' neighbours on other ranks see the same pressure
+    if (plate_free_surface_) {  // the marked particles' neighbours on other ranks see the floored pressure
+      ScopedTimer t(timers_, "halo");
+      halo_plan_.update(p_, n_owned_, 1);
+    }
   }
   const bool use_delta = params_.scheme == Scheme::kDeltaSph && params_.delta > 0.0;
   // The wall ghosts' pressure is continued along the walls with the owned particles' gradient (eqs. 6, 9), so

@@ -60,8 +60,8 @@ struct CouplingParameters {
   // scene: coupling.plate_wall_free_surface: a particle beside a face with the water around it gone (Marrone et al.
   // 2010's free-surface mark) is held at the atmosphere's pressure or above; it pushes the face and is pushed by
   // it, but neither pulls the other, and it does not expand as it leaves the face (docs/coupling.md, section 21);
-  // false: every particle's ghosts continue its pressure, tension included.
-  bool plate_wall_free_surface = false;
+  // true by default (as the scene's key); false: every particle's ghosts continue its pressure, tension included.
+  bool plate_wall_free_surface = true;
   // scene: coupling.plate_wall_exchange (docs/coupling.md, sections 12 and 16):
   //   kExtrapolated (default): explicit; the plate gets the water's load extrapolated to mid-step, 1.5 F_n - 0.5
   //                 F_n-1, and the water the face's velocity extrapolated to mid-step, 2 v_n-1/2 - v_n-3/2;
