@@ -100,6 +100,11 @@ std::shared_ptr<const Schema> fluid_schema() {
     s->add(Key::real("alpha", "artificial viscosity coefficient alpha (eqs. 4, 8)").def(0.02).in(0.0, 1.0));
     s->add(Key::real("xsph", "XSPH coefficient (eq. 11); 0 turns it off").def(0.05).in(0.0, 1.0));
     s->add(Key::boolean("tensile_correction", "Monaghan's (2000) tensile-instability correction").def(true));
+    s->add(Key::boolean(
+               "free_surface_floor",
+               "hold every particle the water has left (its moment matrix's smallest eigenvalue over the "
+               "water at most 0.2, Marrone et al. 2010) at the atmosphere's pressure or above")
+               .def(false));
     s->add(Key::real("wall_repulsion", "Monaghan & Kos wall strength A = this * c0^2 / h")
                .def(0.01)
                .positive()
@@ -202,6 +207,7 @@ sph::FluidParams fluid_params(const scene::Node& root, double peak_ground_accele
   p.alpha = f.real("alpha");
   p.xsph = f.real("xsph");
   p.tensile_correction = f.boolean("tensile_correction");
+  p.free_surface_floor = f.boolean("free_surface_floor");
   p.wall_repulsion = f.real("wall_repulsion");
   p.wall_pressure = f.boolean("wall_pressure");
   p.wall_ghost_pressure = wall_ghost_pressure_registry().get(f.string("wall_ghost_pressure")).make;

@@ -151,6 +151,10 @@ Registry<ProbeFactory> build_registry() {
         "water particles beside the plate marked as at a free surface at the last force evaluation "
         "(coupling.plate_wall_free_surface; 0 when off) [-]",
         keys({}), fluid_probe([](const sph::Fluid& f) { return f.plate_free_surface_count(); }, "-"));
+  r.add("free_surface_floor",
+        "water particles the water has left, held at the atmosphere's pressure or above at the last force "
+        "evaluation (fluid.free_surface_floor; 0 when off) [-]",
+        keys({}), fluid_probe([](const sph::Fluid& f) { return f.floored_count(); }, "-"));
   r.add("min_spacing", "closest pair of water particles at the last neighbour search, in dx [-] (clumping)",
         keys({}), fluid_probe([](const sph::Fluid& f) { return f.min_spacing(); }, "dx"));
   r.add("displacement", "displacement of a named plate node [m]",

@@ -218,6 +218,7 @@ void Fluid::compute_forces() {
   }
   const ParticleView pv{x_.data(),    y_.data(), vx_.data(),     vy_.data(), rho_.data(),
                         mass_.data(), p_.data(), volume_.data(), n_owned_,   n_local_};
+  if (params_.free_surface_floor) floor_separated_density(pv);
   if (!plate_wall_.empty()) {  // the plate's surface as a moving wall (plate_wall.hpp)
     {
       ScopedTimer t(timers_, "neighbours");  // its ghost pairs
@@ -234,10 +235,6 @@ void Fluid::compute_forces() {
         plate_wall_.set_free_surface(std::move(marks));
       }
     }
-    if (plate_free_surface_) {  // the marked particles' neighbours on other ranks see the floored pressure
-      ScopedTimer t(timers_, "halo");
-      halo_plan_.update(p_, n_owned_, 1);
-    }
   }
   const bool use_delta = params_.scheme == Scheme::kDeltaSph && params_.delta > 0.0;
   // The wall ghosts' pressure is continued along the walls with the owned particles' gradient (eqs. 6, 9), so
@@ -250,6 +247,10 @@ void Fluid::compute_forces() {
     else
       grad_rho_.clear();
     if (use_delta) halo_plan_.update(grad_rho_, n_owned_, 2);
+  }
+  if (plate_free_surface_) {  // the marked particles' neighbours on other ranks see the floored pressure
+    ScopedTimer t(timers_, "halo");
+    halo_plan_.update(p_, n_owned_, 1);
   }
   {
     ScopedTimer t(timers_, "forces");
@@ -306,6 +307,33 @@ void Fluid::compute_forces() {
   extra_ax_.assign(n_owned_, 0.0);
   extra_ay_.assign(n_owned_, 0.0);
   forces_ready_ = true;
+}
+
+void Fluid::floor_separated_density(const ParticleView& pv) {
+  // Marrone et al. (2010): a particle whose moment matrix over the water (the inverse of eq. 7's L_i without the
+  // walls) has its smallest eigenvalue at most kFreeSurfaceEigenvalue has the water around it gone. Its pressure is
+  // the atmosphere's: a density below rho0 (tension carried out of the water, or an expansion by the walls'
+  // ghosts) is raised to rho0 (eq. 9: p = 0). Its mass is kept; only its volume m / rho shrinks.
+  static const PairList kNoGhosts;
+  const double rho0 = params_.density;
+  {
+    ScopedTimer t(timers_, "density_gradient");
+    floored_ = 0;
+    for (int i = 0; i < n_owned_; ++i) {
+      if (rho_[i] >= rho0 ||
+          moment_min_eigenvalue(pv, pairs_, kNoGhosts, ghosts_, i) > kFreeSurfaceEigenvalue)
+        continue;
+      rho_[i] = rho0;
+      ++floored_;
+    }
+  }
+  // every rank's copies of the raised particles, and their pressure and volume, as the owners'
+  ScopedTimer t(timers_, "halo");
+  halo_plan_.update(rho_, n_owned_, 1);
+  for (int i = 0; i < n_local_; ++i) {
+    p_[i] = pressure_from_density(rho_[i], rho0, c0_);  // eq. 9
+    volume_[i] = mass_[i] / rho_[i];
+  }
 }
 
 void Fluid::predict(PlateDensity plate) {

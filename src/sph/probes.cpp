@@ -164,6 +164,12 @@ double Fluid::plate_free_surface_count() const {
   return static_cast<double>(n);
 }
 
+double Fluid::floored_count() const {
+  long long n = floored_;
+  MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPI_LONG_LONG, MPI_SUM, comm_.get());
+  return static_cast<double>(n);
+}
+
 double Fluid::min_spacing() const {
   double d = search_.min_distance();
   MPI_Allreduce(MPI_IN_PLACE, &d, 1, MPI_DOUBLE, MPI_MIN, comm_.get());

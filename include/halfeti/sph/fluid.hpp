@@ -116,7 +116,8 @@ class Fluid {
   double kinetic_energy() const;
   double max_density_variation() const;     // max |rho - rho0| / rho0
   double plate_free_surface_count() const;  // particles beside the plate marked at the last compute_forces()
-  double min_spacing() const;  // closest fluid pair at the last neighbour search, in dx (over every rank)
+  double floored_count() const;  // particles the free-surface floor raised at the last compute_forces()
+  double min_spacing() const;    // closest fluid pair at the last neighbour search, in dx (over every rank)
 
   const PhaseTimers& timers() const { return timers_; }
   // This rank's halo and migration messages since the run (or its restart) started.
@@ -159,6 +160,8 @@ class Fluid {
   bool near_internal_wall(double x, double y) const;
   void sort_owned_by_cell();
   void exchange_halo();
+  // FluidParams::free_surface_floor: the separated particles' density raised to rho0, after the neighbour search
+  void floor_separated_density(const ParticleView& pv);
   void check_health();
   void remove_spilled();
   void maybe_rebalance();
@@ -201,6 +204,7 @@ class Fluid {
   std::vector<double> extra_ax_, extra_ay_;
   PlateWall plate_wall_;
   bool plate_free_surface_ = false;
+  long floored_ = 0;  // owned particles FluidParams::free_surface_floor raised at the last compute_forces()
 
   double time_ = 0.0, dt_ = 0.0;
   long step_ = 0;

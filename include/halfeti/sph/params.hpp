@@ -66,6 +66,10 @@ struct FluidParams {
   bool tensile_correction = true;  // Monaghan (2000)
   double tensile_epsilon_negative = 0.2;
   double tensile_epsilon_positive = 0.01;
+  // Every particle the water has left (the smallest eigenvalue of its moment matrix over the water at most
+  // kFreeSurfaceEigenvalue, Marrone et al. 2010) is held at the atmosphere's pressure or above in every sum
+  // (docs/sph.md, "Separated particles"); off: the equation of state's pressure, tension included.
+  bool free_surface_floor = false;
 
   // Walls (Monaghan & Kos 1999 plus the wall's pressure, see docs/sph.md)
   double wall_repulsion = 0.01;  // A = wall_repulsion * c0^2 / h
