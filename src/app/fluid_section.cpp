@@ -102,8 +102,8 @@ std::shared_ptr<const Schema> fluid_schema() {
     s->add(Key::boolean("tensile_correction", "Monaghan's (2000) tensile-instability correction").def(true));
     s->add(Key::boolean(
                "free_surface_floor",
-               "hold every particle the water has left (its moment matrix's smallest eigenvalue over the "
-               "water at most 0.2, Marrone et al. 2010) at the atmosphere's pressure or above")
+               "raise every particle the water has left (its moment matrix's smallest eigenvalue over the "
+               "water at most 0.2, Marrone et al. 2010) to rho0 when below it: the atmosphere's pressure")
                .def(false));
     s->add(Key::real("wall_repulsion", "Monaghan & Kos wall strength A = this * c0^2 / h")
                .def(0.01)

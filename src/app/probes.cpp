@@ -152,7 +152,7 @@ Registry<ProbeFactory> build_registry() {
         "(coupling.plate_wall_free_surface; 0 when off) [-]",
         keys({}), fluid_probe([](const sph::Fluid& f) { return f.plate_free_surface_count(); }, "-"));
   r.add("free_surface_floor",
-        "water particles the water has left, held at the atmosphere's pressure or above at the last force "
+        "water particles the water has left raised to rho0, the atmosphere's pressure, at the last force "
         "evaluation (fluid.free_surface_floor; 0 when off) [-]",
         keys({}), fluid_probe([](const sph::Fluid& f) { return f.floored_count(); }, "-"));
   r.add("min_spacing", "closest pair of water particles at the last neighbour search, in dx [-] (clumping)",

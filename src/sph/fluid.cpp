@@ -235,6 +235,10 @@ void Fluid::compute_forces() {
         plate_wall_.set_free_surface(std::move(marks));
       }
     }
+    if (plate_free_surface_) {  // the marked particles' neighbours on other ranks see the floored pressure
+      ScopedTimer t(timers_, "halo");
+      halo_plan_.update(p_, n_owned_, 1);
+    }
   }
   const bool use_delta = params_.scheme == Scheme::kDeltaSph && params_.delta > 0.0;
   // The wall ghosts' pressure is continued along the walls with the owned particles' gradient (eqs. 6, 9), so
@@ -247,10 +251,6 @@ void Fluid::compute_forces() {
     else
       grad_rho_.clear();
     if (use_delta) halo_plan_.update(grad_rho_, n_owned_, 2);
-  }
-  if (plate_free_surface_) {  // the marked particles' neighbours on other ranks see the floored pressure
-    ScopedTimer t(timers_, "halo");
-    halo_plan_.update(p_, n_owned_, 1);
   }
   {
     ScopedTimer t(timers_, "forces");

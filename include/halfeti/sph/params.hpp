@@ -67,8 +67,8 @@ struct FluidParams {
   double tensile_epsilon_negative = 0.2;
   double tensile_epsilon_positive = 0.01;
   // Every particle the water has left (the smallest eigenvalue of its moment matrix over the water at most
-  // kFreeSurfaceEigenvalue, Marrone et al. 2010) is held at the atmosphere's pressure or above in every sum
-  // (docs/sph.md, "Separated particles"); off: the equation of state's pressure, tension included.
+  // kFreeSurfaceEigenvalue, Marrone et al. 2010) is raised to rho0 when below it, the atmosphere's pressure, at
+  // each force evaluation (docs/sph.md, "Separated particles"); off: it keeps the tension it left the water with.
   bool free_surface_floor = false;
 
   // Walls (Monaghan & Kos 1999 plus the wall's pressure, see docs/sph.md)
