@@ -199,16 +199,18 @@ void Fluid::exchange_halo() {
   halo_plan_ = plan;
 }
 
+void Fluid::refresh_pressure_and_volume(int i) {
+  p_[i] = pressure_from_density(rho_[i], params_.density, c0_);  // eq. 9
+  volume_[i] = mass_[i] / rho_[i];
+}
+
 void Fluid::compute_forces() {
   {
     ScopedTimer t(timers_, "halo");
     exchange_halo();
     p_.resize(n_local_);
     volume_.resize(n_local_);
-    for (int i = 0; i < n_local_; ++i) {
-      p_[i] = pressure_from_density(rho_[i], params_.density, c0_);  // eq. 9
-      volume_[i] = mass_[i] / rho_[i];
-    }
+    for (int i = 0; i < n_local_; ++i) refresh_pressure_and_volume(i);
   }
   {
     ScopedTimer t(timers_, "neighbours");
@@ -318,22 +320,22 @@ void Fluid::floor_separated_density(const ParticleView& pv) {
   const double rho0 = params_.density;
   {
     ScopedTimer t(timers_, "density_gradient");
-    floored_ = 0;
-    for (int i = 0; i < n_owned_; ++i) {
-      if (rho_[i] >= rho0 ||
-          moment_min_eigenvalue(pv, pairs_, kNoGhosts, ghosts_, i) > kFreeSurfaceEigenvalue)
-        continue;
+    // marked first, raised after: every particle's measure sees its neighbours' volumes as they came
+    std::vector<int> raised;
+    for (int i = 0; i < n_owned_; ++i)
+      if (rho_[i] < rho0 &&
+          moment_min_eigenvalue(pv, pairs_, kNoGhosts, ghosts_, i) <= kFreeSurfaceEigenvalue)
+        raised.push_back(i);
+    for (const int i : raised) {
       rho_[i] = rho0;
-      ++floored_;
+      refresh_pressure_and_volume(i);
     }
+    floored_ = static_cast<long>(raised.size());
   }
   // every rank's copies of the raised particles, and their pressure and volume, as the owners'
   ScopedTimer t(timers_, "halo");
   halo_plan_.update(rho_, n_owned_, 1);
-  for (int i = 0; i < n_local_; ++i) {
-    p_[i] = pressure_from_density(rho_[i], rho0, c0_);  // eq. 9
-    volume_[i] = mass_[i] / rho_[i];
-  }
+  for (int i = n_owned_; i < n_local_; ++i) refresh_pressure_and_volume(i);
 }
 
 void Fluid::predict(PlateDensity plate) {

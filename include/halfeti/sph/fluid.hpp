@@ -162,6 +162,8 @@ class Fluid {
   void exchange_halo();
   // FluidParams::free_surface_floor: the separated particles' density raised to rho0, after the neighbour search
   void floor_separated_density(const ParticleView& pv);
+  // Local particle i's pressure (eq. 9) and volume m / rho from its density
+  void refresh_pressure_and_volume(int i);
   void check_health();
   void remove_spilled();
   void maybe_rebalance();
