@@ -6,6 +6,7 @@ set -euo pipefail
 root=$1
 work=$2/plot_paper_test
 rm -rf "$work" && mkdir -p "$work/paper"
+export HALFETI_PAPER_RECORDS="$work/records"  # the project's own records (docs/paper-runs) are not this test's
 "$2/src/app/halfeti" run "$root/inputs/validation/plate_cables.yaml" --out "$work/paper/cosine_cable" --overwrite \
   --set scene.end_time=0.02 --set output.field_interval=0.01 >/dev/null
 /usr/bin/python3 "$root/tools/plot" "$work/paper/cosine_cable" >/dev/null
@@ -29,6 +30,26 @@ grep -qF '| sine_cable | running (not finished' "$work/comparison.md" \
   || { echo "a run under way not marked:"; grep "sine_cable |" "$work/comparison.md"; exit 1; }
 grep -qF '| sine_cable: initial cable tension [kPa] | 135 | not run' "$work/comparison.md" \
   || { echo "a run under way gave figures:"; grep "sine_cable: initial" "$work/comparison.md"; exit 1; }
+# A record of the finished run stands in for it once the run folder is gone: the same row, the runs table saying
+# it is a record; a run under way is not recorded, and a record keeps no path of the machine it ran on. A named
+# scene with no finished run is refused.
+/usr/bin/python3 "$root/tools/paper" record "$work/paper" >/dev/null
+[ -s "$work/records/cosine_cable/probes.csv" ] && [ ! -e "$work/records/sine_cable" ] \
+  || { echo "record kept the wrong runs:"; ls "$work/records"; exit 1; }
+if grep -rqF "$work" "$work/records"; then echo "a record names the machine's paths"; exit 1; fi
+mv "$work/paper/cosine_cable" "$work/cosine_cable_gone"
+/usr/bin/python3 "$root/tools/paper" compare "$work/paper" --markdown "$work/comparison.md" >/dev/null
+grep -qF "| cosine_cable: initial cable tension [kPa] | 135 | 135 | -0 % |" "$work/comparison.md" \
+  || { echo "the record was not read:"; grep "cosine_cable: initial" "$work/comparison.md"; exit 1; }
+grep -qE '^\| cosine_cable \| [a-z_]+ \| .* \| record \(' "$work/comparison.md" \
+  || { echo "the runs table does not say the row is a record:"; grep "^| cosine_cable |" "$work/comparison.md"; exit 1; }
+set +e
+message=$(/usr/bin/python3 "$root/tools/paper" record "$work/paper" sine_free 2>&1 >/dev/null)
+status=$?
+set -e
+[ "$status" -eq 2 ] && grep -q "no finished run of sine_free" <<<"$message" \
+  || { echo "record of a scene not run: $status '$message'"; exit 1; }
+mv "$work/cosine_cable_gone" "$work/paper/cosine_cable"
 # The paper-inputs report: two points of the grid (stand-ins: the short run), the rest "not run"; the input at which
 # the paper's figure is met is a bound when the grid's runs do not reach it; a second report replaces its block.
 mkdir -p "$work/inputs"
