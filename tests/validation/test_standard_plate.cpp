@@ -31,7 +31,9 @@ constexpr double kHeight = 0.08;
 struct Measure {
   double ke_max;     // largest plate kinetic energy over 0.1-0.3 s [J/m]
   double tip_speed;  // largest tip speed over 0.1-0.3 s [m/s], central differences over 10 ms
-  double ratio() const { return ke_max / (0.5 * kRubberDensity * kThickness * kHeight / 4.0 * tip_speed * tip_speed); }
+  double ratio() const {
+    return ke_max / (0.5 * kRubberDensity * kThickness * kHeight / 4.0 * tip_speed * tip_speed);
+  }
 };
 
 Measure measure(const std::string& out) {
@@ -41,7 +43,8 @@ Measure measure(const std::string& out) {
   for (std::size_t k = 0; k < t.size(); ++k) {
     if (t[k] < 0.1 || t[k] > 0.3) continue;
     m.ke_max = std::max(m.ke_max, ke[k]);
-    const double v = (test::interpolate(t, tip, t[k] + 0.005) - test::interpolate(t, tip, t[k] - 0.005)) / 0.01;
+    const double v =
+        (test::interpolate(t, tip, t[k] + 0.005) - test::interpolate(t, tip, t[k] - 0.005)) / 0.01;
     m.tip_speed = std::max(m.tip_speed, std::abs(v));
   }
   return m;
@@ -51,20 +54,23 @@ Measure measure(const std::string& out) {
 TEST(StandardPlate, ThePlateMovesAsItsFirstModeWithTheConvergedExchange) {
   const std::string scene = test::source_path("inputs/paper/cosine_cable_standard.yaml");
   const std::string out = test::binary_path("validation_standard_plate");
-  ASSERT_EQ(test::run_scene(scene, out, "--set scene.end_time=0.3", 2), 0) << test::read_text(out + ".stderr");
+  ASSERT_EQ(test::run_scene(scene, out, "--set scene.end_time=0.3", 2), 0)
+      << test::read_text(out + ".stderr");
   const Measure converged = measure(out);
   EXPECT_GT(converged.tip_speed, 0.05);  // the pulse moves the plate
-  EXPECT_LT(converged.ratio(), 3.0) << "largest plate kinetic energy " << converged.ke_max << " J/m, tip speed "
-                                    << converged.tip_speed << " m/s";
+  EXPECT_LT(converged.ratio(), 3.0) << "largest plate kinetic energy " << converged.ke_max
+                                    << " J/m, tip speed " << converged.tip_speed << " m/s";
   // The explicit exchange with the damped Newmark rule and the acoustic added mass (the delta-SPH scenes' coupling):
   // the check above must be able to fail.
   const std::string explicit_out = out + "_explicit";
-  const int status = test::run_scene(scene, explicit_out,
-                                     "--set scene.end_time=0.3 --set coupling.plate_wall_exchange=extrapolated "
-                                     "--set coupling.added_mass=acoustic --set structure.newmark_gamma=0.7 "
-                                     "--set structure.newmark_beta=0.36",
-                                     2);
-  ASSERT_TRUE(status == 0 || status == 3) << test::read_text(explicit_out + ".stderr");  // 3: numerical failure
+  const int status =
+      test::run_scene(scene, explicit_out,
+                      "--set scene.end_time=0.3 --set coupling.plate_wall_exchange=extrapolated "
+                      "--set coupling.added_mass=acoustic --set structure.newmark_gamma=0.7 "
+                      "--set structure.newmark_beta=0.36",
+                      2);
+  ASSERT_TRUE(status == 0 || status == 3)
+      << test::read_text(explicit_out + ".stderr");  // 3: numerical failure
   if (status == 0) {
     const Measure lagged = measure(explicit_out);
     EXPECT_GT(lagged.ratio(), 3.0) << "largest plate kinetic energy " << lagged.ke_max << " J/m, tip speed "
