@@ -70,7 +70,7 @@ double parse_memory_size(const std::string& text, const char* option) {
 }
 
 std::string version_text() {
-  return std::string("halfeti ") + kVersion;
+  return std::string("halfeti ") + kVersion + " (commit " + kGitCommit + ")";
 }
 
 Command parse_command_line(const std::vector<std::string>& args) {

@@ -52,6 +52,8 @@ TEST(Commands, ExitStatuses) {
   EXPECT_EQ(status_of("--help"), 0);
   EXPECT_EQ(status_of("--version"), 0);
   EXPECT_NE(file_text(kDir + "/out.txt").find("halfeti 0."), std::string::npos);
+  // --version names the commit the binary was built at, as summary.json's provenance does
+  EXPECT_NE(file_text(kDir + "/out.txt").find("(commit "), std::string::npos);
   EXPECT_EQ(status_of("check " + scene), 0);
   EXPECT_EQ(status_of(""), 2);
   EXPECT_EQ(status_of("frobnicate"), 2);
