@@ -321,16 +321,15 @@ void Fluid::floor_separated_density(const ParticleView& pv) {
   {
     ScopedTimer t(timers_, "density_gradient");
     // marked first, raised after: every particle's measure sees its neighbours' volumes as they came
-    std::vector<int> raised;
+    floored_.clear();
     for (int i = 0; i < n_owned_; ++i)
       if (rho_[i] < rho0 &&
           moment_min_eigenvalue(pv, pairs_, kNoGhosts, ghosts_, i) <= kFreeSurfaceEigenvalue)
-        raised.push_back(i);
-    for (const int i : raised) {
+        floored_.push_back(i);
+    for (const int i : floored_) {
       rho_[i] = rho0;
       refresh_pressure_and_volume(i);
     }
-    floored_ = static_cast<long>(raised.size());
   }
   // every rank's copies of the raised particles, and their pressure and volume, as the owners'
   ScopedTimer t(timers_, "halo");

@@ -165,7 +165,7 @@ double Fluid::plate_free_surface_count() const {
 }
 
 double Fluid::floored_count() const {
-  long long n = floored_;
+  long long n = static_cast<long long>(floored_.size());
   MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPI_LONG_LONG, MPI_SUM, comm_.get());
   return static_cast<double>(n);
 }

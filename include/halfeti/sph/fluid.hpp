@@ -206,7 +206,8 @@ class Fluid {
   std::vector<double> extra_ax_, extra_ay_;
   PlateWall plate_wall_;
   bool plate_free_surface_ = false;
-  long floored_ = 0;  // owned particles FluidParams::free_surface_floor raised at the last compute_forces()
+  // owned particles FluidParams::free_surface_floor raised at the last compute_forces() (kept: no allocation a step)
+  std::vector<int> floored_;
 
   double time_ = 0.0, dt_ = 0.0;
   long step_ = 0;
