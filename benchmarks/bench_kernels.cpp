@@ -100,7 +100,7 @@ void BM_PairSearch(benchmark::State& state) {
   std::vector<double> xs, ys;
   for (int i : order) xs.push_back(x[i]), ys.push_back(y[i]), gid.push_back(i);
   sph::NeighbourSearch search(grid, kernel);
-  sph::PairList pairs;
+  sph::FluidPairList pairs;
   const int count = static_cast<int>(xs.size());
   for (auto _ : state) {
     search.fluid_pairs(xs.data(), ys.data(), gid.data(), count, count, pairs);

@@ -11,10 +11,11 @@
 namespace halfeti::app {
 
 namespace {
-// Measured on cosine_cable, 1 rank (peak resident memory at dx 3, 1.5, 0.75 mm: 52.6, 63.6, 104.2 MB for 3,246,
-// 13,294, 52,772 particles): about 50 MB of libraries and 1.03 kB per particle; a 64 x 4096 Q9 plate took 2.6 GB,
-// about 10 kB per element.
-constexpr double kBaseBytes = 50e6, kBytesPerParticle = 1.1e3, kBytesPerElement = 10e3;
+// Measured on cosine_cable, 1 rank (peak resident memory at dx 3, 1.5, 0.75 mm: 51.7, 59.5, 88.9 MB for 3,246,
+// 13,294, 52,772 particles, since the water's pairs no longer store their separation): about 50 MB of libraries
+// and 0.75-0.78 kB per particle (the 1 M particles of inputs/bench/long_tank.yaml: 0.67 kB); a 64 x 4096 Q9 plate
+// took 2.6 GB, about 10 kB per element.
+constexpr double kBaseBytes = 50e6, kBytesPerParticle = 0.8e3, kBytesPerElement = 10e3;
 // Wall time per particle-step on one rank, measured on the build machine: water alone 1.7 us (tank_shake at dx
 // 3 mm: 117 s for 20,354 steps of 3,300 particles); with the plate and cables about 2.8 us (cosine_cable at dx
 // 1.5 mm: 1,171 s for 62,825 steps of 13,294 particles on 2 ranks). Divided by the ranks (an upper bound on the

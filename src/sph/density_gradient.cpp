@@ -5,20 +5,21 @@
 
 namespace halfeti::sph {
 
-void density_gradient(const ParticleView& pv, const PairList& pairs, std::vector<double>& grad_rho) {
+void density_gradient(const ParticleView& pv, const FluidPairList& pairs, std::vector<double>& grad_rho) {
   grad_rho.assign(2 * static_cast<std::size_t>(pv.n_owned), 0.0);
   for (int i = 0; i < pv.n_owned; ++i) {
     // B = sum_j V_j grad_i W_ij (x) r_ji, so that sum_j V_j (f_j - f_i) grad_i W_ij = B grad f for linear f;
     // L_i of eq. 7 is its inverse (written with grad_i W pointing from i towards j).
     double b00 = 0, b01 = 0, b10 = 0, b11 = 0, sx = 0, sy = 0;
-    const double rhoi = pv.rho[i];
+    const double rhoi = pv.rho[i], x_i = pv.x[i], y_i = pv.y[i];
     for_each_neighbour(pairs, i, [&](int j, int k) {
       const double vj = pv.volume[j];
-      const double gx = -pairs.f[k] * pairs.ex[k], gy = -pairs.f[k] * pairs.ey[k];  // grad_i W_ij
-      b00 += vj * gx * pairs.ex[k];
-      b01 += vj * gx * pairs.ey[k];
-      b10 += vj * gy * pairs.ex[k];
-      b11 += vj * gy * pairs.ey[k];
+      const double ex = pv.x[j] - x_i, ey = pv.y[j] - y_i;        // r_ji
+      const double gx = -pairs.f[k] * ex, gy = -pairs.f[k] * ey;  // grad_i W_ij
+      b00 += vj * gx * ex;
+      b01 += vj * gx * ey;
+      b10 += vj * gy * ex;
+      b11 += vj * gy * ey;
       const double drho = (pv.rho[j] - rhoi) * vj;  // eq. 6
       sx += drho * gx;
       sy += drho * gy;
@@ -35,18 +36,22 @@ void density_gradient(const ParticleView& pv, const PairList& pairs, std::vector
   }
 }
 
-double moment_min_eigenvalue(const ParticleView& pv, const PairList& pairs, const PairList& ghost_pairs,
+double moment_min_eigenvalue(const ParticleView& pv, const FluidPairList& pairs, const PairList& ghost_pairs,
                              const WallGhosts& ghosts, int i) {
   double b00 = 0, b01 = 0, b11 = 0;  // B is symmetric: grad_i W_ij = -F r_ji
-  auto add = [&](double v, const PairList& l, int k) {
-    const double vf = -v * l.f[k], ex = l.ex[k], ey = l.ey[k];
+  auto add = [&](double v, double f, double ex, double ey) {
+    const double vf = -v * f;
     b00 += vf * ex * ex;
     b01 += vf * ex * ey;
     b11 += vf * ey * ey;
   };
-  for_each_neighbour(pairs, i, [&](int j, int k) { add(pv.volume[j], pairs, k); });
+  const double x_i = pv.x[i], y_i = pv.y[i];
+  for_each_neighbour(pairs, i,
+                     [&](int j, int k) { add(pv.volume[j], pairs.f[k], pv.x[j] - x_i, pv.y[j] - y_i); });
   if (!ghost_pairs.start.empty())
-    for_each_neighbour(ghost_pairs, i, [&](int g, int k) { add(ghosts.volume[g], ghost_pairs, k); });
+    for_each_neighbour(ghost_pairs, i, [&](int g, int k) {
+      add(ghosts.volume[g], ghost_pairs.f[k], ghost_pairs.ex[k], ghost_pairs.ey[k]);
+    });
   const double mean = 0.5 * (b00 + b11), half = 0.5 * (b00 - b11);
   return mean - std::sqrt(half * half + b01 * b01);
 }

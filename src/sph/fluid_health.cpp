@@ -201,13 +201,9 @@ void Fluid::check_health() {
 
 int Fluid::closest_pair_particle(double dmin) const {
   // The owned particle with a neighbour at dmin (the search's own minimum, so an exact match exists on the rank
-  // that found it; -1 elsewhere). The pair list holds the offsets at the search.
-  const double r2 = dmin * dmin;
+  // that found it; -1 elsewhere), as the search recorded it.
   if (pairs_.start.size() != static_cast<std::size_t>(n_owned_) + 1) return -1;  // particles spilled since
-  for (int i = 0; i < n_owned_; ++i)
-    for (int k = pairs_.start[i]; k < pairs_.start[i + 1]; ++k)
-      if (pairs_.ex[k] * pairs_.ex[k] + pairs_.ey[k] * pairs_.ey[k] <= r2 * (1.0 + 1e-12)) return i;
-  return -1;
+  return search_.min_distance() <= dmin * (1.0 + 1e-12) ? search_.closest_particle() : -1;
 }
 
 }  // namespace halfeti::sph

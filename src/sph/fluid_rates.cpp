@@ -13,7 +13,7 @@ inline double tensile_coefficient(double p, double rho, double eps_neg, double e
 }
 }  // namespace
 
-void momentum_rates(const ParticleView& pv, const PairList& pairs, const PairList& wall_pairs,
+void momentum_rates(const ParticleView& pv, const FluidPairList& pairs, const PairList& wall_pairs,
                     const WallParticles& walls, const PairList& ghost_pairs, const WallGhosts& ghosts,
                     const std::vector<double>& grad_rho, const RateConstants& k, Rates& out) {
   const int n = pv.n_owned;
@@ -31,11 +31,11 @@ void momentum_rates(const ParticleView& pv, const PairList& pairs, const PairLis
 
   for (int i = 0; i < n; ++i) {
     const double rhoi = pv.rho[i], pi = pv.p[i], ui = pv.vx[i], vi = pv.vy[i];
-    const double ri_t = k.tensile ? tensile[i] : 0.0, inv_rhoi = 1.0 / rhoi;
+    const double ri_t = k.tensile ? tensile[i] : 0.0, inv_rhoi = 1.0 / rhoi, x_i = pv.x[i], y_i = pv.y[i];
     double ax = 0, ay = 0;
     double mu_i = 0.0;
     for_each_neighbour(pairs, i, [&](int j, int q) {
-      const double ex = pairs.ex[q], ey = pairs.ey[q], r2 = ex * ex + ey * ey;
+      const double ex = pv.x[j] - x_i, ey = pv.y[j] - y_i, r2 = ex * ex + ey * ey;  // r_ji
       const double vj = pv.volume[j];
       const double du = pv.vx[j] - ui, dv = pv.vy[j] - vi;
       // eq. 4 pressure term in the symmetric volume form -(1/rho_i) sum (p_i + p_j) V_j grad_i W_ij
@@ -120,7 +120,7 @@ void momentum_rates(const ParticleView& pv, const PairList& pairs, const PairLis
   out.max_accel = std::sqrt(max_a2);
 }
 
-void continuity_rates(const ParticleView& pv, const PairList& pairs, const PairList& ghost_pairs,
+void continuity_rates(const ParticleView& pv, const FluidPairList& pairs, const PairList& ghost_pairs,
                       const WallGhosts& ghosts, const std::vector<double>& grad_rho, const RateConstants& k,
                       Rates& out) {
   const int n = pv.n_owned;
@@ -130,11 +130,11 @@ void continuity_rates(const ParticleView& pv, const PairList& pairs, const PairL
   const double diffusion = k.delta * k.h * k.c0;  // eq. 3
   const bool use_delta = k.delta > 0.0 && !grad_rho.empty();
   for (int i = 0; i < n; ++i) {
-    const double rhoi = pv.rho[i], ui = pv.vx[i], vi = pv.vy[i];
+    const double rhoi = pv.rho[i], ui = pv.vx[i], vi = pv.vy[i], x_i = pv.x[i], y_i = pv.y[i];
     const double gri_x = use_delta ? grad_rho[2 * i] : 0.0, gri_y = use_delta ? grad_rho[2 * i + 1] : 0.0;
     double div = 0, diff = 0, xs = 0, ys = 0;
     for_each_neighbour(pairs, i, [&](int j, int q) {
-      const double ex = pairs.ex[q], ey = pairs.ey[q], f = pairs.f[q];
+      const double ex = pv.x[j] - x_i, ey = pv.y[j] - y_i, f = pairs.f[q];  // r_ji
       const double vj = pv.volume[j];
       const double du = pv.vx[j] - ui, dv = pv.vy[j] - vi;
       // eq. 3, first term, in Marrone et al.'s (2011) form -rho_i sum V_j (u_j - u_i).grad_i W_ij, grad_i W = -F r_ji

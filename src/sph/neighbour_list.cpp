@@ -99,7 +99,7 @@ bool NeighbourSearch::crosses_barrier(double xi, double yi, double xj, double yj
 }
 
 void NeighbourSearch::fluid_pairs(const double* x, const double* y, const std::int64_t* gid, int n_owned,
-                                  int n_local, PairList& out) {
+                                  int n_local, FluidPairList& out) {
   bin(
       grid_, x, y, n_local, [gid](int i) { return gid[i]; }, cell_start_, cell_items_, cell_of_);
   // Positions in binned order, so that the three cells of a row are one contiguous range.
@@ -117,6 +117,7 @@ void NeighbourSearch::fluid_pairs(const double* x, const double* y, const std::i
   const double rc2 = kernel_.support() * kernel_.support();
   const bool barriers = !barriers_.empty();
   double min_r2 = std::numeric_limits<double>::infinity();
+  closest_particle_ = -1;
   for (int i = 0; i < n_owned; ++i) {
     const int c = cell_of_[i], cx = c % grid_.nx, cy = c / grid_.nx;
     const double xi = x[i], yi = y[i];
@@ -168,13 +169,14 @@ void NeighbourSearch::fluid_pairs(const double* x, const double* y, const std::i
     const std::size_t base = n_pairs;
     n_pairs += kept;
     int* pj = out.j.data() + base;
-    double *pex = out.ex.data() + base, *pey = out.ey.data() + base;
+    double min_i = std::numeric_limits<double>::infinity();
     for (int m = 0; m < kept; ++m) {
-      const int k = cand_[m];
-      pj[m] = cell_items_[k];
-      pex[m] = bx_[k] - xi;
-      pey[m] = by_[k] - yi;
-      min_r2 = std::min(min_r2, cand_r2_[m]);
+      pj[m] = cell_items_[cand_[m]];
+      min_i = std::min(min_i, cand_r2_[m]);
+    }
+    if (min_i < min_r2) {
+      min_r2 = min_i;
+      closest_particle_ = i;
     }
     eval_.batch(cand_r2_.data(), kept, out.w.data() + base, out.f.data() + base);
     out.start[i + 1] = static_cast<int>(n_pairs);

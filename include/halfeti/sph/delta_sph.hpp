@@ -24,14 +24,14 @@ struct ParticleView {
 inline constexpr double kRenormalisationMinDet = 1.0e-3;
 
 // Renormalised density gradient <grad rho>^L_i of owned particles (eqs. 6-7); out has 2 entries per particle.
-void density_gradient(const ParticleView& pv, const PairList& pairs, std::vector<double>& grad_rho);
+void density_gradient(const ParticleView& pv, const FluidPairList& pairs, std::vector<double>& grad_rho);
 
 // The smallest eigenvalue of owned particle i's moment matrix B_i = sum_j V_j grad_i W_ij (x) r_ji over the water
 // and the tank walls' ghosts (the inverse of eq. 7's L_i with the walls, as Marrone et al. 2010 count their fixed
 // ghosts; the plate's ghosts are not in it): about 1 inside the water and beside a tank wall, about 0.5 at a free
 // surface, near 0 for a particle with neither water nor a tank wall around it. Marrone et al. (2010, J. Sci.
 // Comput. 45) take lambda <= kFreeSurfaceEigenvalue as the mark of a free-surface particle.
-double moment_min_eigenvalue(const ParticleView& pv, const PairList& pairs, const PairList& ghost_pairs,
+double moment_min_eigenvalue(const ParticleView& pv, const FluidPairList& pairs, const PairList& ghost_pairs,
                              const WallGhosts& ghosts, int i);
 inline constexpr double kFreeSurfaceEigenvalue = 0.2;
 
@@ -55,14 +55,14 @@ struct RateConstants {
 // Momentum (eqs. 4, 8 + tensile correction + walls + body force) of the owned particles. grad_rho: the owned
 // particles' renormalised density gradient (eqs. 6-7), from which the wall ghosts' pressure is continued along
 // the wall (FluidParams::wall_ghost_pressure = kTaylor); empty: continued with the body force (kBodyForce).
-void momentum_rates(const ParticleView& pv, const PairList& pairs, const PairList& wall_pairs,
+void momentum_rates(const ParticleView& pv, const FluidPairList& pairs, const PairList& wall_pairs,
                     const WallParticles& walls, const PairList& ghost_pairs, const WallGhosts& ghosts,
                     const std::vector<double>& grad_rho, const RateConstants& k, Rates& out);
 
 // Continuity with density diffusion (eqs. 3, 5) and the XSPH velocity (eq. 11). Called with the kicked
 // velocities (symplectic Euler: the density sees the new velocity, which keeps the acoustic modes stable).
 // grad_rho covers owned and ghost particles (halo-updated); empty for the standard scheme.
-void continuity_rates(const ParticleView& pv, const PairList& pairs, const PairList& ghost_pairs,
+void continuity_rates(const ParticleView& pv, const FluidPairList& pairs, const PairList& ghost_pairs,
                       const WallGhosts& ghosts, const std::vector<double>& grad_rho, const RateConstants& k,
                       Rates& out);
 

@@ -191,7 +191,8 @@ class Fluid {
   WallParticles walls_;
   WallGhosts ghosts_;
   NeighbourSearch search_;
-  PairList pairs_, wall_pairs_, ghost_pairs_;
+  FluidPairList pairs_;
+  PairList wall_pairs_, ghost_pairs_;
 
   // Local particles: [0, n_owned_) owned, then ghosts (after exchange_halo()).
   int n_owned_ = 0, n_local_ = 0;

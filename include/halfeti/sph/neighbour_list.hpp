@@ -1,8 +1,8 @@
 // Neighbour pairs of the owned fluid particles, in canonical order (global cell order, then global id) so that
 // every per-particle sum is done in the same order whatever the rank count. Rebuilt every step from the particles
-// binned in the cell grid (owned + ghosts). Each pair stores what the physics needs: the separation
-// r_ji = r_j - r_i, W and F = W'(r)/r, so that grad_i W_ij = -F r_ji (|r_ji|^2 is recomputed from r_ji: cheaper
-// than storing it).
+// binned in the cell grid (owned + ghosts). The water's own pairs (FluidPairList) store j, W and F = W'(r)/r, so
+// that grad_i W_ij = -F r_ji with r_ji = r_j - r_i taken from the positions; the pairs with the walls' fixed points
+// (PairList) store r_ji too (|r_ji|^2 is recomputed from r_ji: cheaper than storing it).
 #pragma once
 
 #include <cstdint>
@@ -59,12 +59,15 @@ struct UninitialisedAllocator : std::allocator<T> {
   }
 };
 
+template <class T>
+using PairArray = std::vector<T, UninitialisedAllocator<T>>;
+
+// Pairs of the owned particles with fixed points (wall particles, wall ghosts): j indexes the fixed points, and
+// each pair stores the separation r_j - r_i.
 struct PairList {
-  template <class T>
-  using Array = std::vector<T, UninitialisedAllocator<T>>;
   std::vector<int> start;  // pairs of owned particle i are [start[i], start[i+1])
-  Array<int> j;
-  Array<double> ex, ey, w, f;
+  PairArray<int> j;
+  PairArray<double> ex, ey, w, f;
   void clear() {
     j.clear();
     ex.clear();
@@ -81,14 +84,6 @@ struct PairList {
     w.push_back(ww);
     f.push_back(ff);
   }
-  // n pairs; new ones are left for the caller to write (no zero fill).
-  void resize(std::size_t n) {
-    j.resize(n);
-    ex.resize(n);
-    ey.resize(n);
-    w.resize(n);
-    f.resize(n);
-  }
   std::size_t size() const { return j.size(); }
   // No pairs for n particles (e.g. a scene without walls).
   static PairList none(int n) {
@@ -98,9 +93,28 @@ struct PairList {
   }
 };
 
+// The water's own pairs: j indexes the local particles (owned and halo). The separation r_ji = r_j - r_i is not
+// stored: a sum over the pairs takes it from the positions, x[j] - x[i], which do not move between the search and
+// the step's last sum over its pairs, so it is the value the search measured, bit for bit. Storing it cost 16 of
+// the 36 bytes of a pair, written by the search and read by the step's three sums (the renormalised gradient,
+// momentum, continuity): without it the water's step is 3-8 % shorter and needs a third less memory (docs/sph.md,
+// "Speed").
+struct FluidPairList {
+  std::vector<int> start;  // pairs of owned particle i are [start[i], start[i+1])
+  PairArray<int> j;
+  PairArray<double> w, f;
+  // n pairs; new ones are left for the caller to write (no zero fill).
+  void resize(std::size_t n) {
+    j.resize(n);
+    w.resize(n);
+    f.resize(n);
+  }
+  std::size_t size() const { return j.size(); }
+};
+
 // Drives a per-pair functor over the neighbours of particle i: fn(j, pair index). Physics never walks cells.
-template <class Fn>
-inline void for_each_neighbour(const PairList& pairs, int i, Fn&& fn) {
+template <class Pairs, class Fn>
+inline void for_each_neighbour(const Pairs& pairs, int i, Fn&& fn) {
   for (int k = pairs.start[i]; k < pairs.start[i + 1]; ++k) fn(pairs.j[k], k);
 }
 
@@ -123,12 +137,14 @@ class NeighbourSearch {
 
   // Fluid pairs for owned particles [0, n_owned) among all local particles [0, n_local).
   void fluid_pairs(const double* x, const double* y, const std::int64_t* gid, int n_owned, int n_local,
-                   PairList& out);
+                   FluidPairList& out);
   // Fixed points of a set within the support of each owned particle (pairs across barriers are dropped).
   void fixed_pairs(int set, const double* x, const double* y, int n_owned, PairList& out) const;
 
-  // Minimum pair distance found by the last fluid_pairs() (for the spacing-collapse monitor).
+  // Minimum pair distance found by the last fluid_pairs() (for the spacing-collapse monitor), and the first owned
+  // particle with a neighbour at that distance (-1 if it found no pair).
   double min_distance() const { return min_distance_; }
+  int closest_particle() const { return closest_particle_; }
 
  private:
   bool crosses_barrier(double xi, double yi, double xj, double yj) const;
@@ -152,6 +168,7 @@ class NeighbourSearch {
   std::vector<double> cand_r2_;     // and their squared distances
   std::vector<Barrier> barriers_;
   double min_distance_ = 0.0;
+  int closest_particle_ = -1;
 };
 
 }  // namespace halfeti::sph

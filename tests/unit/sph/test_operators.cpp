@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <set>
 
@@ -25,8 +26,11 @@ TEST(NeighbourSearch, MatchesBruteForceInCanonicalOrder) {
     gid[i] = (i * 7919) % n;  // ids unrelated to storage order
   }
   NeighbourSearch search(grid, k);
-  PairList pairs;
+  FluidPairList pairs;
   search.fluid_pairs(x.data(), y.data(), gid.data(), n, n, pairs);
+  const KernelEvaluator eval(k);
+  double closest = std::numeric_limits<double>::infinity();
+  int closest_i = -1;
   for (int i = 0; i < n; ++i) {
     std::set<int> brute, found;
     for (int j = 0; j < n; ++j)
@@ -34,13 +38,23 @@ TEST(NeighbourSearch, MatchesBruteForceInCanonicalOrder) {
     std::vector<std::pair<int, std::int64_t>> order;
     for_each_neighbour(pairs, i, [&](int j, int q) {
       found.insert(j);
-      EXPECT_EQ(pairs.ex[q], x[j] - x[i]);
-      EXPECT_EQ(pairs.ey[q], y[j] - y[i]);
+      // W and F at the pair's distance (to rounding: the search evaluates them in vector registers)
+      const double ex = x[j] - x[i], ey = y[j] - y[i], r = std::sqrt(ex * ex + ey * ey);
+      double w, f;
+      eval(r, w, f);
+      EXPECT_NEAR(pairs.w[q], w, 1e-12 * std::abs(w));
+      EXPECT_NEAR(pairs.f[q], f, 1e-12 * std::abs(f));
+      if (r < closest) {
+        closest = r;
+        closest_i = i;
+      }
       order.push_back({grid.cell_of(x[j], y[j]), gid[j]});
     });
     EXPECT_EQ(brute, found);
     EXPECT_TRUE(std::is_sorted(order.begin(), order.end()));  // global cell order, then global id
   }
+  EXPECT_EQ(search.min_distance(), closest);  // and the first particle that has a neighbour there
+  EXPECT_EQ(search.closest_particle(), closest_i);
 }
 
 TEST(NeighbourSearch, BarrierDropsCrossingPairs) {
@@ -49,7 +63,7 @@ TEST(NeighbourSearch, BarrierDropsCrossingPairs) {
   std::vector<double> x{0.045, 0.055}, y{0.05, 0.05};
   std::vector<std::int64_t> gid{0, 1};
   NeighbourSearch search(grid, k);
-  PairList pairs;
+  FluidPairList pairs;
   search.fluid_pairs(x.data(), y.data(), gid.data(), 2, 2, pairs);
   EXPECT_EQ(pairs.size(), 2u);
   search.set_barriers(barriers_from_polyline({0.05, 0.0, 0.05, 0.04, 0.05, 0.1}));
@@ -61,7 +75,7 @@ namespace {
 struct Lattice {
   std::vector<double> x, y, vx, vy, rho, m, p;
   std::vector<std::int64_t> gid;
-  PairList pairs;
+  FluidPairList pairs;
 };
 Lattice make_lattice(const Kernel& k, double dx, int nx, int ny, double grad_x, double grad_y) {
   Lattice l;
@@ -182,7 +196,7 @@ TEST(DeltaSph, ArtificialViscosityDissipates) {
   std::vector<std::int64_t> gid{0, 1};
   const auto grid = halfeti::parallel::CellGrid::covering(-0.05, -0.05, 0.05, 0.05, k.support());
   NeighbourSearch search(grid, k);
-  PairList pairs;
+  FluidPairList pairs;
   search.fluid_pairs(x.data(), y.data(), gid.data(), 2, 2, pairs);
   std::vector<double> vol{m[0] / rho[0], m[1] / rho[1]};
   const ParticleView pv{x.data(), y.data(), vx.data(),  vy.data(), rho.data(),
