@@ -79,4 +79,20 @@ void HaloPlan::update(std::vector<std::int64_t>& field, std::size_t owned) const
   plan_.exchange(buf.data(), field.data() + owned, 1, MPI_INT64_T);
 }
 
+void HaloPlan::update(std::initializer_list<std::vector<double>*> fields, std::size_t owned) const {
+  const std::size_t ghosts = ghost_count(), nf = fields.size();
+  for (auto* f : fields) f->resize(owned + ghosts);
+  if (single_) return;
+  std::vector<double> buf(send_ids_.size() * nf), recv(ghosts * nf);
+  for (std::size_t k = 0; k < send_ids_.size(); ++k) {
+    std::size_t c = k * nf;
+    for (const auto* f : fields) buf[c++] = (*f)[send_ids_[k]];
+  }
+  plan_.exchange(buf.data(), recv.data(), static_cast<int>(nf), MPI_DOUBLE);
+  for (std::size_t g = 0; g < ghosts; ++g) {
+    std::size_t c = g * nf;
+    for (auto* f : fields) (*f)[owned + g] = recv[c++];
+  }
+}
+
 }  // namespace halfeti::parallel

@@ -149,15 +149,19 @@ void Fluid::distribute(ParticleArrays all) {
   sort_owned_by_cell();
 }
 
-void Fluid::sort_owned_by_cell() {
-  cell_.resize(n_owned_);
-  for (int i = 0; i < n_owned_; ++i) cell_[i] = grid_.cell_of(x_[i], y_[i]);
-  std::vector<int> perm(n_owned_);
-  std::iota(perm.begin(), perm.end(), 0);
+void Fluid::sort_owned_by_cell(bool cells_current) {
+  if (!cells_current) {
+    cell_.resize(n_owned_);
+    for (int i = 0; i < n_owned_; ++i) cell_[i] = grid_.cell_of(x_[i], y_[i]);
+  }
   const auto before = [&](int a, int b) {
     return cell_[a] != cell_[b] ? cell_[a] < cell_[b] : gid_[a] < gid_[b];
   };
-  if (std::is_sorted(perm.begin(), perm.end(), before)) return;  // most steps: nobody changed cell
+  bool sorted = true;  // most steps: nobody changed cell
+  for (int i = 1; i < n_owned_ && sorted; ++i) sorted = !before(i, i - 1);
+  if (sorted) return;
+  std::vector<int> perm(n_owned_);
+  std::iota(perm.begin(), perm.end(), 0);
   std::sort(perm.begin(), perm.end(), before);
   permute(gid_, perm);
   permute(x_, perm);
@@ -172,30 +176,9 @@ void Fluid::sort_owned_by_cell() {
 void Fluid::exchange_halo() {
   // The plan is rebuilt every step (particles move every step; building it costs less than one field update).
   const parallel::HaloPlan plan(comm_.get(), grid_, owner_, cell_, peers_, &traffic_);
-  constexpr int kFields = 6;
-  std::vector<double> state(static_cast<std::size_t>(n_owned_) * kFields);
-  for (int i = 0; i < n_owned_; ++i) {
-    double* s = &state[static_cast<std::size_t>(i) * kFields];
-    s[0] = x_[i];
-    s[1] = y_[i];
-    s[2] = vx_[i];
-    s[3] = vy_[i];
-    s[4] = rho_[i];
-    s[5] = mass_[i];
-  }
-  plan.update(state, n_owned_, kFields);
+  plan.update({&x_, &y_, &vx_, &vy_, &rho_, &mass_}, n_owned_);
   plan.update(gid_, n_owned_);
   n_local_ = n_owned_ + static_cast<int>(plan.ghost_count());
-  for (auto* v : {&x_, &y_, &vx_, &vy_, &rho_, &mass_}) v->resize(n_local_);
-  for (int i = n_owned_; i < n_local_; ++i) {
-    const double* s = &state[static_cast<std::size_t>(i) * kFields];
-    x_[i] = s[0];
-    y_[i] = s[1];
-    vx_[i] = s[2];
-    vy_[i] = s[3];
-    rho_[i] = s[4];
-    mass_[i] = s[5];
-  }
   halo_plan_ = plan;
 }
 
@@ -352,16 +335,7 @@ void Fluid::predict(PlateDensity plate) {
   {
     // ... then the density rate and XSPH with the kicked velocities (the same halo plan carries them) ...
     ScopedTimer t(timers_, "halo");
-    std::vector<double> v(2 * static_cast<std::size_t>(n_owned_));
-    for (int i = 0; i < n_owned_; ++i) {
-      v[2 * i] = vx_[i];
-      v[2 * i + 1] = vy_[i];
-    }
-    halo_plan_.update(v, n_owned_, 2);
-    for (int i = n_owned_; i < n_local_; ++i) {
-      vx_[i] = v[2 * i];
-      vy_[i] = v[2 * i + 1];
-    }
+    halo_plan_.update({&vx_, &vy_}, n_owned_);
   }
   {
     ScopedTimer t(timers_, "forces");
@@ -491,16 +465,19 @@ void Fluid::maybe_rebalance() {
 }
 
 void Fluid::migrate() {
+  cell_.resize(n_owned_);  // fewer after a spill: only the particles left may migrate
   for (int i = 0; i < n_owned_; ++i) cell_[i] = grid_.cell_of(x_[i], y_[i]);
+  bool cells_current = true;
   if (size_ > 1) {
     const parallel::ParticleMigration move(comm_.get(), parallel::destinations(cell_, owner_), &traffic_);
     if (move.anything_moves()) {
       for (auto* v : {&x_, &y_, &vx_, &vy_, &rho_, &mass_}) move.apply(*v);
       move.apply(gid_);
       n_owned_ = n_local_ = static_cast<int>(move.new_count());
+      cells_current = false;  // the arrivals' cells are not in cell_
     }
   }
-  sort_owned_by_cell();
+  sort_owned_by_cell(cells_current);
 }
 
 Fluid::State Fluid::state() const {

@@ -51,90 +51,113 @@ void Fluid::fatal(const std::string& kind, const std::string& message) {
   HALFETI_NUMERICAL_ERROR(message);
 }
 
-void Fluid::remove_spilled() {
-  // The tank is open at the top: water thrown over it leaves the run, as it would leave the real tank. Removed in
-  // place (owned particles are compacted before migration), counted, and reported once per episode.
-  const double H = params_.tank_height;
-  long removed = 0, key = std::numeric_limits<long>::max();
-  double mass = 0.0, first_x = 0.0, first_y = 0.0;
-  std::string msg;
+Fluid::LocalHealth Fluid::scan_health() {
+  // One pass over the owned particles. The tank is open at the top: water thrown over it leaves the run, as it
+  // would leave the real tank (removed in place: owned particles are compacted before migration, and counted).
+  // What remains is checked for NaN/Inf, then for a place outside the tank, and its density variation taken. The
+  // lowest global id found is the one reported.
+  LocalHealth h;
+  h.spilled_key = h.bad_key = std::numeric_limits<long>::max();
+  const std::string at = where(time_, step_);
+  const double L = params_.tank_length, H = params_.tank_height, rho0 = params_.density;
   int kept = 0;
   for (int i = 0; i < n_owned_; ++i) {
     if (std::isfinite(y_[i]) && y_[i] > H) {
-      ++removed;
-      mass += mass_[i];
-      if (gid_[i] < key) {
-        key = gid_[i];
-        first_x = x_[i];
-        first_y = y_[i];
-        msg = "particle " + std::to_string(gid_[i]) + " at " + point(x_[i], y_[i]);
+      ++h.spilled;
+      h.spilled_mass += mass_[i];
+      if (gid_[i] < h.spilled_key) {
+        h.spilled_key = gid_[i];
+        h.spilled_x = x_[i];
+        h.spilled_y = y_[i];
+        h.spilled_msg = "particle " + std::to_string(gid_[i]) + " at " + point(x_[i], y_[i]);
       }
       continue;
     }
-    for (auto* v : {&x_, &y_, &vx_, &vy_, &rho_, &mass_}) (*v)[kept] = (*v)[i];
-    gid_[kept] = gid_[i];
-    ++kept;
+    if (kept != i) {  // only once a particle has gone: most steps write nothing
+      for (auto* v : {&x_, &y_, &vx_, &vy_, &rho_, &mass_}) (*v)[kept] = (*v)[i];
+      gid_[kept] = gid_[i];
+    }
+    const int k = kept++;
+    const char* bad = nullptr;
+    if (!std::isfinite(x_[k]) || !std::isfinite(y_[k]))
+      bad = "position";
+    else if (!std::isfinite(vx_[k]) || !std::isfinite(vy_[k]))
+      bad = "velocity";
+    else if (!std::isfinite(rho_[k]))
+      bad = "density";
+    if (bad || x_[k] < 0.0 || x_[k] > L || y_[k] < 0.0 || y_[k] > H) {
+      if (gid_[k] < h.bad_key) {
+        h.bad_key = gid_[k];
+        h.bad_msg = at + "particle " + std::to_string(gid_[k]) + " at " + point(x_[k], y_[k]) +
+                    (bad ? std::string(" has NaN ") + bad + " (check dt and the sound speed)"
+                         : std::string(" left the tank through a wall (wall repulsion too weak for this "
+                                       "speed, or dt too large)"));
+      }
+      continue;
+    }
+    const double v = std::abs(rho_[k] - rho0) / rho0;
+    if (v > h.density_variation) {
+      h.density_variation = v;
+      h.densest = k;
+    }
   }
-  for (auto* v : {&x_, &y_, &vx_, &vy_, &rho_, &mass_}) v->resize(kept);
-  gid_.resize(kept);
-  n_owned_ = n_local_ = kept;
-  double sums[2] = {static_cast<double>(removed), mass};
-  MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, comm_.get());
-  const std::string first = first_problem(comm_.get(), removed > 0, key, msg);
-  n_global_ -= static_cast<long>(sums[0]);
-  spilled_mass_ += sums[1];
+  if (kept != n_owned_) {
+    for (auto* v : {&x_, &y_, &vx_, &vy_, &rho_, &mass_}) v->resize(kept);
+    gid_.resize(kept);
+    n_owned_ = n_local_ = kept;
+  }
+  return h;
+}
+
+void Fluid::report_spilled(const LocalHealth& mine, bool anywhere) {
+  // Counted and reported once per episode (the sums and the first place are gathered only when water has left).
+  double sums[2] = {0.0, 0.0};
+  std::string first;
+  double place[2] = {0.0, 0.0};
+  if (anywhere) {
+    sums[0] = static_cast<double>(mine.spilled);
+    sums[1] = mine.spilled_mass;
+    MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, comm_.get());
+    first = first_problem(comm_.get(), mine.spilled > 0, mine.spilled_key, mine.spilled_msg);
+    n_global_ -= static_cast<long>(sums[0]);
+    spilled_mass_ += sums[1];
+    place[0] = mine.spilled_x;
+    place[1] = mine.spilled_y;
+    MPI_Bcast(place, 2, MPI_DOUBLE, first_rank(comm_.get(), mine.spilled > 0, mine.spilled_key), comm_.get());
+  }
   std::ostringstream os;
-  if (sums[0] > 0)
+  if (anywhere)
     os << where(time_, step_) << static_cast<long>(sums[0])
        << " particle(s) left over the tank's open top (first: " << first << "); removed, " << spilled_mass_
        << " kg/m spilled so far";
   // Worst: the water spilled so far [kg/m]; place: where the first particle over the top (lowest id) was.
-  double place[2] = {first_x, first_y};
-  if (sums[0] > 0) MPI_Bcast(place, 2, MPI_DOUBLE, first_rank(comm_.get(), removed > 0, key), comm_.get());
   // One episode while water keeps leaving: it ends after 0.05 s without a spill (a sloshing wave throws its crest
   // over the top particle by particle, over a few steps each).
   constexpr double kQuiet = 0.05;                     // [s]
   const HealthEvent* open = open_warning("spilled");  // before warn() opens or closes one
-  const bool quiet = sums[0] == 0 && (!open || time_ - open->worst_time > kQuiet);
-  warn("spilled", sums[0] > 0, quiet, os.str(), spilled_mass_, place[0], place[1]);
+  const bool quiet = !anywhere && (!open || time_ - open->worst_time > kQuiet);
+  warn("spilled", anywhere, quiet, os.str(), spilled_mass_, place[0], place[1]);
 }
 
 void Fluid::check_health() {
-  remove_spilled();
+  const LocalHealth mine = scan_health();
   const std::string at = where(time_, step_);
-  // Fatal: NaN/Inf, then a particle outside the tank. The lowest global id found on any rank is reported.
-  long key = std::numeric_limits<long>::max();
-  std::string msg, kind;
-  const double L = params_.tank_length, H = params_.tank_height;
-  for (int i = 0; i < n_owned_; ++i) {
-    const char* bad = nullptr;
-    if (!std::isfinite(x_[i]) || !std::isfinite(y_[i]))
-      bad = "position";
-    else if (!std::isfinite(vx_[i]) || !std::isfinite(vy_[i]))
-      bad = "velocity";
-    else if (!std::isfinite(rho_[i]))
-      bad = "density";
-    std::string m, k;
-    if (bad) {
-      k = "nan";
-      m = at + "particle " + std::to_string(gid_[i]) + " at " + point(x_[i], y_[i]) + " has NaN " + bad +
-          " (check dt and the sound speed)";
-    } else if (x_[i] < 0.0 || x_[i] > L || y_[i] < 0.0 || y_[i] > H) {
-      k = "outside_tank";
-      m = at + "particle " + std::to_string(gid_[i]) + " at " + point(x_[i], y_[i]) +
-          " left the tank through a wall (wall repulsion too weak for this speed, or dt too large)";
-    } else {
-      continue;
-    }
-    if (gid_[i] < key) {
-      key = gid_[i];
-      msg = m;
-      kind = k;
-    }
+  // The checks' local findings joined by one reduction a step (a minimum as the maximum of its negative; ids are
+  // exact in a double): whether water spilled or a particle went bad anywhere (the lowest id), the largest
+  // density variation and the closest pair. Only a check that found something gathers more.
+  constexpr double kNone = -std::numeric_limits<double>::infinity();
+  const double dmin_local = search_.min_distance();
+  double all[4] = {mine.spilled > 0 ? -static_cast<double>(mine.spilled_key) : kNone,
+                   mine.bad_msg.empty() ? kNone : -static_cast<double>(mine.bad_key), mine.density_variation,
+                   -dmin_local};
+  MPI_Allreduce(MPI_IN_PLACE, all, 4, MPI_DOUBLE, MPI_MAX, comm_.get());
+  report_spilled(mine, all[0] != kNone);
+
+  // Fatal: NaN/Inf, then a particle outside the tank.
+  if (all[1] != kNone) {
+    const std::string failed = first_problem(comm_.get(), !mine.bad_msg.empty(), mine.bad_key, mine.bad_msg);
+    fatal(failed.find("NaN") != std::string::npos ? "nan" : "outside_tank", failed);
   }
-  const bool mine = !msg.empty();
-  const std::string failed = first_problem(comm_.get(), mine, key, msg);
-  if (!failed.empty()) fatal(failed.find("NaN") != std::string::npos ? "nan" : "outside_tank", failed);
   if (dt_ < params_.min_dt) {
     std::ostringstream os;
     os << at << "time step " << dt_ << " s fell below the floor " << params_.min_dt
@@ -142,45 +165,36 @@ void Fluid::check_health() {
     fatal("dt_floor", os.str());
   }
 
-  // Density variation (weak compressibility lost): warning, fatal only if the scene says so.
-  struct {
-    double v;
-    int r;
-  } local{0.0, rank_}, global{0.0, 0};
-  int worst = -1;
-  for (int i = 0; i < n_owned_; ++i) {
-    const double v = std::abs(rho_[i] - params_.density) / params_.density;
-    if (v > local.v) {
-      local.v = v;
-      worst = i;
-    }
-  }
-  MPI_Allreduce(&local, &global, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm_.get());
-  const bool dense = global.v > params_.max_density_variation;
+  // Density variation (weak compressibility lost): warning, fatal only if the scene says so. Reported from the
+  // lowest rank holding the largest value.
+  const double variation = all[2];
+  const bool dense = variation > params_.max_density_variation;
   if (dense) {
+    const bool holds = mine.densest >= 0 && mine.density_variation == variation;
+    const int root = first_rank(comm_.get(), holds, 0);
     std::string m;
     double place[2] = {0.0, 0.0};
-    if (rank_ == global.r && worst >= 0) {
+    if (rank_ == root) {
+      const int worst = mine.densest;
       std::ostringstream os;
-      os << at << "density variation " << 100.0 * global.v << "% > " << 100.0 * params_.max_density_variation
+      os << at << "density variation " << 100.0 * variation << "% > " << 100.0 * params_.max_density_variation
          << "% at particle " << gid_[worst] << " " << point(x_[worst], y_[worst])
          << " (weak compressibility lost: raise the sound speed)";
       m = os.str();
       place[0] = x_[worst];
       place[1] = y_[worst];
     }
-    m = first_problem(comm_.get(), rank_ == global.r, 0, m);
+    m = first_problem(comm_.get(), rank_ == root, 0, m);
     if (params_.density_variation_fatal) fatal("density_variation", m);
-    MPI_Bcast(place, 2, MPI_DOUBLE, global.r, comm_.get());
-    warn("density_variation", true, false, m, global.v, place[0], place[1]);
+    MPI_Bcast(place, 2, MPI_DOUBLE, root, comm_.get());
+    warn("density_variation", true, false, m, variation, place[0], place[1]);
   } else {
-    warn("density_variation", false, global.v < 0.8 * params_.max_density_variation, "");
+    warn("density_variation", false, variation < 0.8 * params_.max_density_variation, "");
   }
 
   // Spacing collapse (tensile instability): closest pair found by the last neighbour search, in dx; its place
   // (the pair's first particle, where it is now) looked up only while the condition holds.
-  double dmin = search_.min_distance();
-  MPI_Allreduce(MPI_IN_PLACE, &dmin, 1, MPI_DOUBLE, MPI_MIN, comm_.get());
+  const double dmin = -all[3];
   const bool collapsed = dmin < params_.spacing_collapse_fraction * dx_;
   std::ostringstream os;
   double place[2] = {std::nan(""), std::nan("")};

@@ -7,6 +7,7 @@
 #include <mpi.h>
 
 #include <cstdint>
+#include <initializer_list>
 #include <vector>
 
 #include "halfeti/parallel/cell_grid.hpp"
@@ -37,6 +38,10 @@ class HaloPlan {
   // rows [owned, owned + ghosts) of the same array (it is resized to (owned + ghosts) * ncomp).
   void update(std::vector<double>& field, std::size_t owned, int ncomp = 1) const;
   void update(std::vector<std::int64_t>& field, std::size_t owned) const;
+  // The same for several fields kept one array each (each holds at least `owned` values): the messages of
+  // update() on their interleaved array (one item a particle, the fields in the order given), but only the rows
+  // sent are packed, so a rank with few ghosts does not copy every owned particle's state.
+  void update(std::initializer_list<std::vector<double>*> fields, std::size_t owned) const;
 
  private:
   bool single_ = true;         // one rank: no ghosts

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "halfeti/core/communicator.hpp"
@@ -158,14 +159,26 @@ class Fluid {
   void set_owner(std::vector<int> owner);
   bool excluded(double px, double py) const;
   bool near_internal_wall(double x, double y) const;
-  void sort_owned_by_cell();
+  // Orders the owned particles by (cell, gid); `cells_current`: cell_ already holds each one's cell.
+  void sort_owned_by_cell(bool cells_current = false);
   void exchange_halo();
   // FluidParams::free_surface_floor: the separated particles' density raised to rho0, after the neighbour search
   void floor_separated_density(const ParticleView& pv);
   // Local particle i's pressure (eq. 9) and volume m / rho from its density
   void refresh_pressure_and_volume(int i);
   void check_health();
-  void remove_spilled();
+  // What this rank's pass over its particles found (the checks' local halves; one reduction joins them).
+  struct LocalHealth {
+    long spilled = 0, spilled_key = 0;  // particles over the open top, and the lowest id among them
+    double spilled_mass = 0.0, spilled_x = 0.0, spilled_y = 0.0;
+    std::string spilled_msg;
+    long bad_key = 0;  // lowest id with a NaN or outside the tank; its message and kind
+    std::string bad_msg;
+    double density_variation = 0.0;  // largest |rho - rho0| / rho0, at owned particle `densest` (-1: none)
+    int densest = -1;
+  };
+  LocalHealth scan_health();
+  void report_spilled(const LocalHealth& mine, bool anywhere);
   void maybe_rebalance();
   void migrate();
   std::vector<long> global_cell_counts() const;

@@ -85,9 +85,15 @@ TEST(HaloPlan, GhostsAreTheOtherRanksParticlesAroundOwnCells) {
     cells.push_back(c);
   }
   const std::size_t owned = gid.size();
+  std::vector<double> xs(owned), ys(owned);  // the same positions, one array each
+  for (std::size_t i = 0; i < owned; ++i) {
+    xs[i] = pos[2 * i];
+    ys[i] = pos[2 * i + 1];
+  }
   const HaloPlan plan(MPI_COMM_WORLD, s.grid, s.owner, cells);
   plan.update(gid, owned);
   plan.update(pos, owned, 2);
+  plan.update({&xs, &ys}, owned);
   // Expected: particles of other ranks whose cell touches (8-neighbourhood) a cell this rank owns.
   std::set<std::int64_t> expected;
   for (std::size_t i = 0; i < s.gx.size(); ++i) {
@@ -109,6 +115,12 @@ TEST(HaloPlan, GhostsAreTheOtherRanksParticlesAroundOwnCells) {
   for (std::size_t k = owned; k < gid.size(); ++k) {  // the fields came with their ids
     EXPECT_EQ(pos[2 * k], s.gx[gid[k]]);
     EXPECT_EQ(pos[2 * k + 1], s.gy[gid[k]]);
+  }
+  ASSERT_EQ(xs.size(), gid.size());  // one array a field: the same ghosts in the same rows
+  ASSERT_EQ(ys.size(), gid.size());
+  for (std::size_t k = 0; k < gid.size(); ++k) {
+    EXPECT_EQ(xs[k], pos[2 * k]);
+    EXPECT_EQ(ys[k], pos[2 * k + 1]);
   }
   if (s.size > 1) {
     EXPECT_GT(got.size(), 0u);
