@@ -1,5 +1,7 @@
 #include "halfeti/parallel/migration.hpp"
 
+#include "halfeti/core/error.hpp"
+
 namespace halfeti::parallel {
 
 std::vector<int> destinations(const std::vector<int>& cells, const std::vector<int>& owner) {
@@ -8,15 +10,43 @@ std::vector<int> destinations(const std::vector<int>& cells, const std::vector<i
   return dest;
 }
 
+namespace {
+// Particle indices grouped by destination rank in increasing order, each group in the particles' order; and
+// the count for each rank.
+std::vector<int> group_by_destination(const std::vector<int>& destination, int size,
+                                      std::vector<int>& counts) {
+  std::vector<int> fill(size, 0), order(destination.size());
+  counts.assign(size, 0);
+  for (int d : destination) ++counts[d];
+  for (int r = 1; r < size; ++r) fill[r] = fill[r - 1] + counts[r - 1];
+  for (std::size_t i = 0; i < destination.size(); ++i) order[fill[destination[i]]++] = static_cast<int>(i);
+  return order;
+}
+}  // namespace
+
 ParticleMigration::ParticleMigration(MPI_Comm comm, const std::vector<int>& destination, Traffic* traffic) {
   int size = 1;
   MPI_Comm_size(comm, &size);
-  std::vector<int> counts(size, 0), fill(size, 0);
-  for (int d : destination) ++counts[d];
-  for (int r = 1; r < size; ++r) fill[r] = fill[r - 1] + counts[r - 1];
-  order_.resize(destination.size());
-  for (std::size_t i = 0; i < destination.size(); ++i) order_[fill[destination[i]]++] = static_cast<int>(i);
+  std::vector<int> counts;
+  order_ = group_by_destination(destination, size, counts);
   plan_ = CommPlan::discover(comm, counts, traffic);
+}
+
+ParticleMigration::ParticleMigration(MPI_Comm comm, const std::vector<int>& destination,
+                                     const std::vector<int>& peers, Traffic* traffic) {
+  int size = 1, rank = 0;
+  MPI_Comm_size(comm, &size);
+  MPI_Comm_rank(comm, &rank);
+  std::vector<int> counts;
+  order_ = group_by_destination(destination, size, counts);
+  std::vector<int> to_peers(peers.size());
+  std::size_t placed = static_cast<std::size_t>(counts[rank]);
+  for (std::size_t k = 0; k < peers.size(); ++k) {
+    to_peers[k] = counts[peers[k]];
+    placed += static_cast<std::size_t>(to_peers[k]);
+  }
+  HALFETI_CHECK(placed == destination.size(), "a particle's destination is neither this rank nor a peer");
+  plan_ = CommPlan::with_peers(comm, peers, to_peers, counts[rank], traffic);
 }
 
 void ParticleMigration::apply(std::vector<double>& field, int ncomp) const {

@@ -462,14 +462,20 @@ void Fluid::maybe_rebalance() {
   if (parallel::imbalance(owner_, counts, size_, params_.first_rank_share) <= params_.rebalance_threshold)
     return;
   set_owner(parallel::partition_cells_collective(comm_.get(), grid_, counts, params_.first_rank_share));
+  far_move_ = true;  // particles now move between ranks that may not be neighbours
 }
 
 void Fluid::migrate() {
-  cell_.resize(n_owned_);  // fewer after a spill: only the particles left may migrate
-  for (int i = 0; i < n_owned_; ++i) cell_[i] = grid_.cell_of(x_[i], y_[i]);
+  // cell_ holds the cells the health scan found (it follows the last move); fewer rows after a spill: only the
+  // particles left may migrate.
+  cell_.resize(n_owned_);
   bool cells_current = true;
   if (size_ > 1) {
-    const parallel::ParticleMigration move(comm_.get(), parallel::destinations(cell_, owner_), &traffic_);
+    const auto to = parallel::destinations(cell_, owner_);
+    const parallel::ParticleMigration move =
+        far_move_ ? parallel::ParticleMigration(comm_.get(), to, &traffic_)
+                  : parallel::ParticleMigration(comm_.get(), to, peers_, &traffic_);
+    far_move_ = false;
     if (move.anything_moves()) {
       for (auto* v : {&x_, &y_, &vx_, &vy_, &rho_, &mass_}) move.apply(*v);
       move.apply(gid_);

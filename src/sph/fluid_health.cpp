@@ -60,6 +60,7 @@ Fluid::LocalHealth Fluid::scan_health() {
   h.spilled_key = h.bad_key = std::numeric_limits<long>::max();
   const std::string at = where(time_, step_);
   const double L = params_.tank_length, H = params_.tank_height, rho0 = params_.density;
+  cell_.resize(n_owned_);
   int kept = 0;
   for (int i = 0; i < n_owned_; ++i) {
     if (std::isfinite(y_[i]) && y_[i] > H) {
@@ -100,6 +101,12 @@ Fluid::LocalHealth Fluid::scan_health() {
       h.density_variation = v;
       h.densest = k;
     }
+    // Its cell, for the migration: a step moves a particle at most into a cell next to its own, whose owner is
+    // this rank or a halo peer; one that went further makes the migration find its senders (found here, joined in
+    // check_health's reduction).
+    const int c = grid_.cell_of(x_[k], y_[k]);
+    cell_[k] = c;
+    if (owner_[c] != rank_ && !std::binary_search(peers_.begin(), peers_.end(), owner_[c])) h.far = true;
   }
   if (kept != n_owned_) {
     for (auto* v : {&x_, &y_, &vx_, &vy_, &rho_, &mass_}) v->resize(kept);
@@ -144,13 +151,15 @@ void Fluid::check_health() {
   const std::string at = where(time_, step_);
   // The checks' local findings joined by one reduction a step (a minimum as the maximum of its negative; ids are
   // exact in a double): whether water spilled or a particle went bad anywhere (the lowest id), the largest
-  // density variation and the closest pair. Only a check that found something gathers more.
+  // density variation, the closest pair, and whether a particle went past the halo peers (the migration's need).
+  // Only a check that found something gathers more.
   constexpr double kNone = -std::numeric_limits<double>::infinity();
   const double dmin_local = search_.min_distance();
-  double all[4] = {mine.spilled > 0 ? -static_cast<double>(mine.spilled_key) : kNone,
+  double all[5] = {mine.spilled > 0 ? -static_cast<double>(mine.spilled_key) : kNone,
                    mine.bad_msg.empty() ? kNone : -static_cast<double>(mine.bad_key), mine.density_variation,
-                   -dmin_local};
-  MPI_Allreduce(MPI_IN_PLACE, all, 4, MPI_DOUBLE, MPI_MAX, comm_.get());
+                   -dmin_local, mine.far ? 1.0 : 0.0};
+  MPI_Allreduce(MPI_IN_PLACE, all, 5, MPI_DOUBLE, MPI_MAX, comm_.get());
+  far_move_ = all[4] > 0.0;
   report_spilled(mine, all[0] != kNone);
 
   // Fatal: NaN/Inf, then a particle outside the tank.

@@ -176,6 +176,7 @@ class Fluid {
     std::string bad_msg;
     double density_variation = 0.0;  // largest |rho - rho0| / rho0, at owned particle `densest` (-1: none)
     int densest = -1;
+    bool far = false;  // a particle's new cell is owned by a rank that is not a halo peer
   };
   LocalHealth scan_health();
   void report_spilled(const LocalHealth& mine, bool anywhere);
@@ -213,7 +214,11 @@ class Fluid {
   double spilled_mass_ = 0.0;
   std::vector<std::int64_t> gid_;
   std::vector<double> x_, y_, vx_, vy_, rho_, mass_, p_, volume_;
-  std::vector<int> cell_;
+  std::vector<int>
+      cell_;  // owned particles' cells (set by the health scan for the migration that follows it)
+  // the step's migration must find its senders over the whole communicator (a particle went past the halo peers,
+  // or the cells were partitioned afresh); set by check_health() and maybe_rebalance(), read by migrate()
+  bool far_move_ = false;
   std::vector<double> grad_rho_;
   Rates rates_;
   RateConstants constants_{};
