@@ -214,8 +214,8 @@ class Fluid {
   double spilled_mass_ = 0.0;
   std::vector<std::int64_t> gid_;
   std::vector<double> x_, y_, vx_, vy_, rho_, mass_, p_, volume_;
-  std::vector<int>
-      cell_;  // owned particles' cells (set by the health scan for the migration that follows it)
+  // owned particles' cells (set by the health scan for the migration that follows it)
+  std::vector<int> cell_;
   // the step's migration must find its senders over the whole communicator (a particle went past the halo peers,
   // or the cells were partitioned afresh); set by check_health() and maybe_rebalance(), read by migrate()
   bool far_move_ = false;
