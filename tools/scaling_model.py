@@ -3,7 +3,7 @@
 ranks from what a 1-rank and a 2-rank run of it measured, and a stated network.
 
 usage: tools/scaling_model.py RUN_1 RUN_2 [--ranks 2,8,64,256,1024] [--latency 1.5e-6] [--bandwidth 12.5e9]
-                              [--collectives 9] [--ghost-weight 0.5] [--imbalance 1.03] [--markdown]
+                              [--collectives 3] [--ghost-weight 0.5] [--imbalance 1.03] [--markdown]
 
 RUN_1, RUN_2: run folders (their summary.json) of the same scene on 1 and 2 ranks, e.g. from
 `jobscripts/scaling --strong inputs/bench/long_tank.yaml --ranks 1,2`.
@@ -42,7 +42,7 @@ def main():
     ap.add_argument("--ranks", default="2,8,64,256,1024")
     ap.add_argument("--latency", type=float, default=1.5e-6)      # s, one message (InfiniBand class)
     ap.add_argument("--bandwidth", type=float, default=12.5e9)   # B/s, 100 Gb/s
-    ap.add_argument("--collectives", type=int, default=9)        # small all-reductions a step (counted in the code)
+    ap.add_argument("--collectives", type=int, default=3)  # a step's all-reductions: sph_collectives' 2 + the stop check
     ap.add_argument("--ghost-weight", type=float, default=0.5)   # a ghost's cost against an owned particle's
     ap.add_argument("--imbalance", type=float, default=1.03)     # METIS's default 3 % tolerance
     ap.add_argument("--markdown", action="store_true")
