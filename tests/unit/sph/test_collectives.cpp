@@ -51,7 +51,7 @@ int MPI_Gather(const void* s, int sn, MPI_Datatype st, void* r, int rn, MPI_Data
 // A dam break in a small tank (water moving, crossing the ranks' borders every few steps), no events: a step calls
 // two all-reductions (the time step's maxima; the health checks' findings, joined into one), nothing else over
 // the communicator: the migration talks to the halo peers only, as no particle goes past them in a step. Before
-// (to 6 Dec) a step made seven all-reductions and, on more than one rank, a non-blocking barrier (the
+// (to 6 Dec) a step made six all-reductions and, on more than one rank, a non-blocking barrier (the
 // migration's consensus on who sends to whom).
 TEST(Collectives, AWaterStepCallsTwoAllReductions) {
   FluidParams p;
