@@ -16,9 +16,7 @@ int first_rank(MPI_Comm comm, bool has, long key) {
   return root;
 }
 
-std::string first_problem(MPI_Comm comm, bool has_problem, long key, const std::string& message) {
-  const int root = first_rank(comm, has_problem, key);
-  if (root < 0) return {};
+std::string broadcast_from(MPI_Comm comm, int root, const std::string& message) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   int len = rank == root ? static_cast<int>(message.size()) : 0;
@@ -26,6 +24,11 @@ std::string first_problem(MPI_Comm comm, bool has_problem, long key, const std::
   std::string out(rank == root ? message : std::string(len, ' '));
   MPI_Bcast(out.data(), len, MPI_CHAR, root, comm);
   return out;
+}
+
+std::string first_problem(MPI_Comm comm, bool has_problem, long key, const std::string& message) {
+  const int root = first_rank(comm, has_problem, key);
+  return root < 0 ? std::string() : broadcast_from(comm, root, message);
 }
 
 }  // namespace halfeti

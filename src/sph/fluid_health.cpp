@@ -58,7 +58,6 @@ Fluid::LocalHealth Fluid::scan_health() {
   // lowest global id found is the one reported.
   LocalHealth h;
   h.spilled_key = h.bad_key = std::numeric_limits<long>::max();
-  const std::string at = where(time_, step_);
   const double L = params_.tank_length, H = params_.tank_height, rho0 = params_.density;
   cell_.resize(n_owned_);
   int kept = 0;
@@ -89,7 +88,7 @@ Fluid::LocalHealth Fluid::scan_health() {
     if (bad || x_[k] < 0.0 || x_[k] > L || y_[k] < 0.0 || y_[k] > H) {
       if (gid_[k] < h.bad_key) {
         h.bad_key = gid_[k];
-        h.bad_msg = at + "particle " + std::to_string(gid_[k]) + " at " + point(x_[k], y_[k]) +
+        h.bad_msg = "particle " + std::to_string(gid_[k]) + " at " + point(x_[k], y_[k]) +
                     (bad ? std::string(" has NaN ") + bad + " (check dt and the sound speed)"
                          : std::string(" left the tank through a wall (wall repulsion too weak for this "
                                        "speed, or dt too large)"));
@@ -125,12 +124,13 @@ void Fluid::report_spilled(const LocalHealth& mine, bool anywhere) {
     sums[0] = static_cast<double>(mine.spilled);
     sums[1] = mine.spilled_mass;
     MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, comm_.get());
-    first = first_problem(comm_.get(), mine.spilled > 0, mine.spilled_key, mine.spilled_msg);
+    const int root = first_rank(comm_.get(), mine.spilled > 0, mine.spilled_key);
+    first = broadcast_from(comm_.get(), root, mine.spilled_msg);
     n_global_ -= static_cast<long>(sums[0]);
     spilled_mass_ += sums[1];
     place[0] = mine.spilled_x;
     place[1] = mine.spilled_y;
-    MPI_Bcast(place, 2, MPI_DOUBLE, first_rank(comm_.get(), mine.spilled > 0, mine.spilled_key), comm_.get());
+    MPI_Bcast(place, 2, MPI_DOUBLE, root, comm_.get());
   }
   std::ostringstream os;
   if (anywhere)
@@ -165,7 +165,7 @@ void Fluid::check_health() {
   // Fatal: NaN/Inf, then a particle outside the tank.
   if (all[1] != kNone) {
     const std::string failed = first_problem(comm_.get(), !mine.bad_msg.empty(), mine.bad_key, mine.bad_msg);
-    fatal(failed.find("NaN") != std::string::npos ? "nan" : "outside_tank", failed);
+    fatal(failed.find("NaN") != std::string::npos ? "nan" : "outside_tank", at + failed);
   }
   if (dt_ < params_.min_dt) {
     std::ostringstream os;
@@ -193,7 +193,7 @@ void Fluid::check_health() {
       place[0] = x_[worst];
       place[1] = y_[worst];
     }
-    m = first_problem(comm_.get(), rank_ == root, 0, m);
+    m = broadcast_from(comm_.get(), root, m);
     if (params_.density_variation_fatal) fatal("density_variation", m);
     MPI_Bcast(place, 2, MPI_DOUBLE, root, comm_.get());
     warn("density_variation", true, false, m, variation, place[0], place[1]);

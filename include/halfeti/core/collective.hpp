@@ -22,6 +22,8 @@ namespace detail {
 std::string first_problem(MPI_Comm comm, bool has_problem, long key, const std::string& message);
 // Collective: the lowest rank among those with `has` and the smallest `key`; -1 when no rank has.
 int first_rank(MPI_Comm comm, bool has, long key);
+// Collective: `message` as the root has it, on every rank (for a root already found by first_rank()).
+std::string broadcast_from(MPI_Comm comm, int root, const std::string& message);
 
 // The root must be among the participants (its outcome is the one shared).
 template <class Work>
