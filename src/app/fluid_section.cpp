@@ -98,6 +98,13 @@ std::shared_ptr<const Schema> fluid_schema() {
     s->add(Key::choice("scheme", "delta-SPH or standard SPH", scheme_registry().names()).def("delta"));
     s->add(Key::real("delta", "density diffusion coefficient delta (eq. 3)").def(0.1).in(0.0, 1.0));
     s->add(Key::real("alpha", "artificial viscosity coefficient alpha (eqs. 4, 8)").def(0.02).in(0.0, 1.0));
+    s->add(Key::real("laminar_viscosity",
+                     "kinematic viscosity nu of a laminar viscous term (Morris et al. 1997, beside eq. 8's "
+                     "artificial one); the same fluid at every dx; 0 = off, water 1e-6",
+                     "m^2/s")
+               .def(0.0)
+               .at_least(0.0)
+               .at_most(1.0));
     s->add(Key::real("xsph", "XSPH coefficient (eq. 11); 0 turns it off").def(0.05).in(0.0, 1.0));
     s->add(Key::boolean("tensile_correction", "Monaghan's (2000) tensile-instability correction").def(true));
     s->add(Key::boolean(
@@ -205,6 +212,7 @@ sph::FluidParams fluid_params(const scene::Node& root, double peak_ground_accele
   p.scheme = scheme_registry().get(f.string("scheme")).make;
   p.delta = f.real("delta");
   p.alpha = f.real("alpha");
+  p.laminar_viscosity = f.real("laminar_viscosity");
   p.xsph = f.real("xsph");
   p.tensile_correction = f.boolean("tensile_correction");
   p.free_surface_floor = f.boolean("free_surface_floor");

@@ -247,6 +247,7 @@ void Fluid::compute_forces() {
     k.dx = dx_;
     k.delta = use_delta ? params_.delta : 0.0;
     k.alpha = params_.alpha;
+    k.laminar_nu = params_.laminar_viscosity;
     k.xsph = params_.xsph;
     k.tensile = params_.tensile_correction;
     k.eps_neg = params_.tensile_epsilon_negative;
@@ -267,7 +268,7 @@ void Fluid::compute_forces() {
                         {params_.tank_length, params_.tank_height, params_.lid}, dx_,
                         params_.kinematic_viscosity, rates_.ax.data(), rates_.ay.data());
     if (!plate_wall_.empty()) {  // the plate's surface as a moving wall (plate_wall.hpp)
-      PlateWallConstants pk{dx_, kernel_.h, k.rho0, c0_, k.alpha, k.body_x, k.body_y};
+      PlateWallConstants pk{dx_, kernel_.h, k.rho0, c0_, k.alpha, k.laminar_nu, k.body_x, k.body_y};
       pk.wall_amplitude = k.wall_amplitude;  // the tank walls' repulsion on the faces too
       pk.wall_range = k.wall_range;
       pk.tank_length = params_.tank_length;
@@ -287,6 +288,9 @@ void Fluid::compute_forces() {
     MPI_Allreduce(MPI_IN_PLACE, m, 2, MPI_DOUBLE, MPI_MAX, comm_.get());
     double dt = params_.cfl * kernel_.h / (c0_ + m[0]);
     if (m[1] > 0.0) dt = std::min(dt, params_.cfl * std::sqrt(kernel_.h / m[1]));
+    // the laminar term's diffusion limit (Morris et al. 1997): dt <= 0.125 h^2 / nu
+    if (params_.laminar_viscosity > 0.0)
+      dt = std::min(dt, 0.125 * kernel_.h * kernel_.h / params_.laminar_viscosity);
     dt_ = std::min(dt, params_.max_dt);
   }
   extra_ax_.assign(n_owned_, 0.0);

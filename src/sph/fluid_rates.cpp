@@ -26,7 +26,9 @@ void momentum_rates(const ParticleView& pv, const FluidPairList& pairs, const Pa
     tensile[j] = tensile_coefficient(pv.p[j], pv.rho[j], k.eps_neg, k.eps_pos);
   const double inv_w_dx = 1.0 / k.w_dx;
   const double eta2 = 0.01 * k.h * k.h;
-  const double viscosity = k.alpha * k.h * k.c0 * k.rho0;   // eq. 4
+  const double viscosity = k.alpha * k.h * k.c0 * k.rho0;  // eq. 4
+  const bool laminar = k.laminar_nu > 0.0;
+  const double four_nu = 4.0 * k.laminar_nu;
   const double body_norm = std::hypot(k.body_x, k.body_y);  // |b|, the same for every particle
 
   for (int i = 0; i < n; ++i) {
@@ -34,6 +36,7 @@ void momentum_rates(const ParticleView& pv, const FluidPairList& pairs, const Pa
     const double ri_t = k.tensile ? tensile[i] : 0.0, inv_rhoi = 1.0 / rhoi, x_i = pv.x[i], y_i = pv.y[i];
     double ax = 0, ay = 0;
     double mu_i = 0.0;
+    double lx = 0.0, ly = 0.0;  // the laminar term, nu times the velocity's Laplacian
     for_each_neighbour(pairs, i, [&](int j, int q) {
       const double ex = pv.x[j] - x_i, ey = pv.y[j] - y_i, r2 = ex * ex + ey * ey;  // r_ji
       const double vj = pv.volume[j];
@@ -52,9 +55,21 @@ void momentum_rates(const ParticleView& pv, const FluidPairList& pairs, const Pa
       ax -= scalar * pairs.f[q] * ex;
       ay -= scalar * pairs.f[q] * ey;
       mu_i = std::max(mu_i, std::abs(mu));
+      if (laminar) {
+        // Morris et al. (1997) in Lo & Shao's (2003) form: nu lap(u)_i = sum_j 4 nu m_j (r_ij.grad_i W_ij)
+        // / ((rho_i + rho_j)(r_ij^2 + eta^2)) u_ij, with r_ij.grad_i W_ij = F r^2 (F < 0) and u_ij = -(du, dv)
+        const double s = four_nu * pv.mass[j] * pairs.f[q] * r2 / ((rhoi + pv.rho[j]) * (r2 + eta2));
+        lx -= s * du;
+        ly -= s * dv;
+      }
     });
-    ax *= inv_rhoi;
-    ay *= inv_rhoi;
+    if (laminar) {
+      ax = ax * inv_rhoi + lx;
+      ay = ay * inv_rhoi + ly;
+    } else {  // as before the laminar term, to the bit
+      ax *= inv_rhoi;
+      ay *= inv_rhoi;
+    }
     max_mu = std::max(max_mu, k.h * mu_i);
 
     // Wall pressure: the eq. 4 pressure term over the ghost points behind the walls, their pressure continued
@@ -93,6 +108,15 @@ void momentum_rates(const ParticleView& pv, const FluidPairList& pairs, const Pa
         s += viscosity * (du_dot_e / (r2 + eta2)) * ghosts.volume[g] / rhoi * -ghost_pairs.f[q];
         ax += s * ghost_pairs.ex[q];
         ay += s * ghost_pairs.ey[q];
+        if (laminar) {
+          // the laminar term with the same ghost velocity (m_g = rho_i V_g, rho_g = rho_i): mirrored or reversed
+          const double un = ui * ghosts.nx[g] + vi * ghosts.ny[g];
+          const double dgx = k.wall_no_slip ? -2.0 * ui : -2.0 * un * ghosts.nx[g];
+          const double dgy = k.wall_no_slip ? -2.0 * vi : -2.0 * un * ghosts.ny[g];
+          const double lam = 0.5 * four_nu * ghosts.volume[g] * ghost_pairs.f[q] * r2 / (r2 + eta2);
+          ax -= lam * dgx;  // lam u_ig = -lam (u_g - u_i)
+          ay -= lam * dgy;
+        }
       });
     // Walls: Monaghan & Kos (1999) repulsion, kept as a short-range barrier against penetration.
     for_each_neighbour(wall_pairs, i, [&](int w, int q) {

@@ -423,6 +423,13 @@ void PlateWall::momentum(const double* vx, const double* vy, const double* rho, 
       scalar -= viscosity * du_dot_e / (ex * ex + ey * ey + eta2) * gvol_[g] * f * inv_rhoi;
       sx += scalar * ex;
       sy += scalar * ey;
+      if (k.laminar_nu > 0.0) {
+        // the laminar term (fluid_rates.cpp) with the same mirrored ghost velocity, u_i - u_g = 2 un n, and
+        // m_g = rho_i V_g: 2 nu V_g F r^2 / (r^2 + eta^2) (u_i - u_g) (F < 0); the plate takes its reaction below
+        const double r2 = ex * ex + ey * ey, lam = 2.0 * k.laminar_nu * gvol_[g] * f * r2 / (r2 + eta2);
+        sx += 2.0 * lam * un * nx;
+        sy += 2.0 * lam * un * ny;
+      }
     }
     // The face's repulsion, as the tank walls' (fluid_rates.cpp) over a continuous wall (the Monaghan & Kos profile
     // along a wall sums to one): so that water reaching the plate's foot meets the same corner as at the tank's

@@ -43,6 +43,7 @@ struct Rates {
 
 struct RateConstants {
   double rho0, c0, h, dx, delta, alpha, xsph;
+  double laminar_nu;  // nu of the laminar viscous term (Morris et al. 1997); 0 = off
   bool tensile;
   double eps_neg, eps_pos, w_dx;  // tensile correction: epsilons and W(dx)
   double wall_amplitude;          // Monaghan & Kos A = wall_repulsion c0^2 / h

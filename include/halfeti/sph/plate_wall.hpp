@@ -42,6 +42,7 @@ struct LatticeOffsets {
 
 struct PlateWallConstants {
   double dx = 0.0, h = 0.0, rho0 = 0.0, c0 = 0.0, alpha = 0.0;
+  double laminar_nu = 0.0;  // the laminar viscous term's nu (fluid_rates.cpp), over the face ghosts too
   double body_x = 0.0, body_y = 0.0;
   // The tank walls' Monaghan & Kos (1999) repulsion, on the faces as on the walls: amplitude (m/s^2) and range (m)
   double wall_amplitude = 0.0, wall_range = 0.0;
