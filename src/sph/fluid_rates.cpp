@@ -63,13 +63,9 @@ void momentum_rates(const ParticleView& pv, const FluidPairList& pairs, const Pa
         ly -= s * dv;
       }
     });
-    if (laminar) {
-      ax = ax * inv_rhoi + lx;
-      ay = ay * inv_rhoi + ly;
-    } else {  // as before the laminar term, to the bit
-      ax *= inv_rhoi;
-      ay *= inv_rhoi;
-    }
+    ax = ax * inv_rhoi +
+         lx;  // without the laminar term the same bits as before it (a fused a * b + 0 rounds as a * b)
+    ay = ay * inv_rhoi + ly;
     max_mu = std::max(max_mu, k.h * mu_i);
 
     // Wall pressure: the eq. 4 pressure term over the ghost points behind the walls, their pressure continued
