@@ -63,8 +63,8 @@ void momentum_rates(const ParticleView& pv, const FluidPairList& pairs, const Pa
         ly -= s * dv;
       }
     });
-    ax = ax * inv_rhoi +
-         lx;  // without the laminar term the same bits as before it (a fused a * b + 0 rounds as a * b)
+    // without the laminar term (lx = 0) the same bits as before it: a fused a * b + 0 rounds as a * b does
+    ax = ax * inv_rhoi + lx;
     ay = ay * inv_rhoi + ly;
     max_mu = std::max(max_mu, k.h * mu_i);
 
