@@ -225,6 +225,15 @@ ParticleView lattice_view(Lattice& l, std::vector<double>& vol) {
 bool interior(double x, double y, double lo, double hi) {
   return x > lo && x < hi && y > lo && y < hi;
 }
+// Only the laminar term (no artificial viscosity, tensile correction or walls), c0 and rho0 as the other tests'.
+RateConstants laminar_only(const Kernel& k, double nu) {
+  RateConstants c{};
+  c.h = k.h;
+  c.c0 = 10.0;
+  c.rho0 = 1000.0;
+  c.laminar_nu = nu;
+  return c;
+}
 }  // namespace
 
 TEST(DeltaSph, LaminarViscosityIsNuTimesTheLaplacian) {
@@ -242,11 +251,7 @@ TEST(DeltaSph, LaminarViscosityIsNuTimesTheLaplacian) {
   std::vector<double> vol;
   const ParticleView pv = lattice_view(l, vol);
   const int n = pv.n_owned;
-  RateConstants c{};
-  c.h = k.h;
-  c.c0 = 10.0;
-  c.rho0 = 1000.0;
-  c.laminar_nu = nu;
+  RateConstants c = laminar_only(k, nu);
   Rates r;
   momentum_rates(pv, l.pairs, PairList::none(n), WallParticles{}, PairList::none(n), WallGhosts{}, {}, c, r);
   const double lo = 3.0 * dx, hi = 13.0 * dx;  // the support (2.66 dx) full
@@ -306,11 +311,7 @@ TEST(DeltaSph, LaminarViscosityConservesMomentum) {
   std::vector<double> vol;
   const ParticleView pv = lattice_view(l, vol);
   const int n = pv.n_owned;
-  RateConstants c{};
-  c.h = k.h;
-  c.c0 = 10.0;
-  c.rho0 = 1000.0;
-  c.laminar_nu = 1e-3;
+  RateConstants c = laminar_only(k, 1e-3);
   Rates r;
   momentum_rates(pv, l.pairs, PairList::none(n), WallParticles{}, PairList::none(n), WallGhosts{}, {}, c, r);
   double px = 0.0, py = 0.0, scale = 0.0;
@@ -359,11 +360,7 @@ TEST(DeltaSph, LaminarViscosityAtAWallIsTheMirroredWater) {
   const ParticleView pv = lattice_view(water, vol);
 
   for (const bool no_slip : {false, true}) {
-    RateConstants c{};
-    c.h = k.h;
-    c.c0 = 10.0;
-    c.rho0 = 1000.0;
-    c.laminar_nu = nu;
+    RateConstants c = laminar_only(k, nu);
     c.wall_pressure = true;
     c.wall_no_slip = no_slip;
     Rates with_ghosts;
