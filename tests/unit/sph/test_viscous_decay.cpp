@@ -16,9 +16,9 @@
 using namespace halfeti::sph;
 
 namespace {
-constexpr double kNu = 1e-3;       // m^2/s, large enough for the decay to stand well above the scheme's own
-constexpr double kEndTime = 4.0;   // s, about six periods
-constexpr double kFitFrom = 0.4;   // s, after the release's first transient
+constexpr double kNu = 1e-3;      // m^2/s, large enough for the decay to stand well above the scheme's own
+constexpr double kEndTime = 4.0;  // s, about six periods
+constexpr double kFitFrom = 0.4;  // s, after the release's first transient
 
 // Amplitude decay rate of the first mode: a straight-line fit of log|a| at the mode's extremes from kFitFrom on.
 double decay_rate(const std::vector<std::string>& overrides) {
@@ -63,15 +63,17 @@ TEST(ViscousDecay, StandingWaveDecaysAtTheRateTheViscositySets) {
   };
   const double scheme = decay_rate(with({"fluid.alpha=0"}));
   // eq. 8 as a viscosity: alpha = 8 nu / (h c0) in 2D (Monaghan 2005)
-  const double eq8 = decay_rate(with({"fluid.alpha=" + std::to_string(8.0 * kNu / (h * p.sound_speed))})) - scheme;
+  const double eq8 =
+      decay_rate(with({"fluid.alpha=" + std::to_string(8.0 * kNu / (h * p.sound_speed))})) - scheme;
   const double morris =
       decay_rate(with({"fluid.alpha=0", "fluid.laminar_viscosity=" + std::to_string(kNu)})) - scheme;
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank == 0)
-    std::printf("decay of the first mode: the scheme's own %.4f 1/s; added by nu = %g m^2/s: eq. 8 %.4f, laminar "
-                "(Morris) %.4f, theory 2 nu k^2 = %.4f 1/s (%.0f %% and %.0f %% of it)\n",
-                scheme, kNu, eq8, morris, theory, 100 * eq8 / theory, 100 * morris / theory);
+    std::printf(
+        "decay of the first mode: the scheme's own %.4f 1/s; added by nu = %g m^2/s: eq. 8 %.4f, laminar "
+        "(Morris) %.4f, theory 2 nu k^2 = %.4f 1/s (%.0f %% and %.0f %% of it)\n",
+        scheme, kNu, eq8, morris, theory, 100 * eq8 / theory, 100 * morris / theory);
   // Eq. 8's form dissipates at the rate nu sets, to 10 % (the lattice's quadrature of the term, 0.88-1 of nu, and
   // the fit over six periods; measured 101 %).
   EXPECT_NEAR(eq8, theory, 0.10 * theory);
