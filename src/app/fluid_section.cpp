@@ -100,7 +100,8 @@ std::shared_ptr<const Schema> fluid_schema() {
     s->add(Key::real("alpha", "artificial viscosity coefficient alpha (eqs. 4, 8)").def(0.02).in(0.0, 1.0));
     s->add(Key::real("laminar_viscosity",
                      "kinematic viscosity nu of a laminar viscous term (Morris et al. 1997, beside eq. 8's "
-                     "artificial one); the same fluid at every dx; 0 = off, water 1e-6",
+                     "artificial one), the same at every dx; it dissipates too little beside a free surface "
+                     "(docs/sph.md); 0 = off",
                      "m^2/s")
                .def(0.0)
                .at_least(0.0)

@@ -62,8 +62,8 @@ struct FluidParams {
   Scheme scheme = Scheme::kDeltaSph;
   double delta = 0.1;   // density diffusion (eq. 3)
   double alpha = 0.02;  // artificial viscosity (eq. 4, 8)
-  // Laminar viscous term (Morris et al. 1997 in Lo & Shao's 2003 form, docs/sph.md "Laminar viscosity"): nu [m^2/s] of a
-  // Newtonian fluid, the same at every dx (eq. 8's artificial viscosity scales with h); 0 = off
+  // Laminar viscous term (Morris et al. 1997 in Lo & Shao's 2003 form, docs/sph.md "Laminar viscosity"): nu
+  // [m^2/s] of a Newtonian fluid, the same at every dx (eq. 8's viscosity scales with h); 0 = off
   double laminar_viscosity = 0.0;
   double xsph = 0.05;              // XSPH epsilon (eq. 11); 0 turns it off
   bool tensile_correction = true;  // Monaghan (2000)
