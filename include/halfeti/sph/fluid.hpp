@@ -172,8 +172,8 @@ class Fluid {
     long spilled = 0, spilled_key = 0;  // particles over the open top, and the lowest id among them
     double spilled_mass = 0.0, spilled_x = 0.0, spilled_y = 0.0;
     std::string spilled_msg;
-    long bad_key =
-        0;  // lowest id with a NaN or outside the tank, and its message (without the time and step)
+    // lowest id with a NaN or outside the tank, and its message (without the time and step)
+    long bad_key = 0;
     std::string bad_msg;
     double density_variation = 0.0;  // largest |rho - rho0| / rho0, at owned particle `densest` (-1: none)
     int densest = -1;

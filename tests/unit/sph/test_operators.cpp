@@ -98,17 +98,23 @@ Lattice make_lattice(const Kernel& k, double dx, int nx, int ny, double grad_x, 
   search.fluid_pairs(l.x.data(), l.y.data(), l.gid.data(), n, n, l.pairs);
   return l;
 }
+// A lattice's particles as a view (volumes m / rho kept alive by the caller).
+ParticleView lattice_view(Lattice& l, std::vector<double>& vol) {
+  vol.resize(l.x.size());
+  for (std::size_t i = 0; i < vol.size(); ++i) vol[i] = l.m[i] / l.rho[i];
+  const int n = static_cast<int>(l.x.size());
+  return ParticleView{l.x.data(), l.y.data(), l.vx.data(), l.vy.data(), l.rho.data(),
+                      l.m.data(), l.p.data(), vol.data(),  n,           n};
+}
 }  // namespace
 
 TEST(DensityGradient, RenormalisedGradientExactForLinearFieldEvenAtCorners) {
   const double dx = 0.005;
   const Kernel k{KernelKind::kCubicSpline, 1.33 * dx};
   auto l = make_lattice(k, dx, 12, 12, 30.0, -100.0);
-  std::vector<double> vol(l.x.size());
-  for (std::size_t i = 0; i < vol.size(); ++i) vol[i] = l.m[i] / l.rho[i];
-  const int n = static_cast<int>(l.x.size());
-  const ParticleView pv{l.x.data(), l.y.data(), l.vx.data(), l.vy.data(), l.rho.data(),
-                        l.m.data(), l.p.data(), vol.data(),  n,           n};
+  std::vector<double> vol;
+  const ParticleView pv = lattice_view(l, vol);
+  const int n = pv.n_owned;
   std::vector<double> g;
   density_gradient(pv, l.pairs, g);
   for (std::size_t i = 0; i < l.x.size(); ++i) {
@@ -136,11 +142,9 @@ TEST(FreeSurfaceMark, MarronesEigenvalueInsideOnAnEdgeAtACornerAndAlone) {
   const double dx = 0.005;
   const Kernel k{KernelKind::kCubicSpline, 1.33 * dx};
   auto l = make_lattice(k, dx, 12, 12, 0.0, 0.0);
-  std::vector<double> vol(l.x.size());
-  for (std::size_t i = 0; i < vol.size(); ++i) vol[i] = l.m[i] / l.rho[i];
-  const int n = static_cast<int>(l.x.size());
-  const ParticleView pv{l.x.data(), l.y.data(), l.vx.data(), l.vy.data(), l.rho.data(),
-                        l.m.data(), l.p.data(), vol.data(),  n,           n};
+  std::vector<double> vol;
+  const ParticleView pv = lattice_view(l, vol);
+  const int n = pv.n_owned;
   const PairList none = PairList::none(n);  // no tank walls here
   const WallGhosts no_walls;
   const double inside = moment_min_eigenvalue(pv, l.pairs, none, no_walls, 6 * 12 + 6);
@@ -214,14 +218,6 @@ TEST(DeltaSph, ArtificialViscosityDissipates) {
 }
 
 namespace {
-// A lattice's particles as a view (volumes m / rho kept alive by the caller).
-ParticleView lattice_view(Lattice& l, std::vector<double>& vol) {
-  vol.resize(l.x.size());
-  for (std::size_t i = 0; i < vol.size(); ++i) vol[i] = l.m[i] / l.rho[i];
-  const int n = static_cast<int>(l.x.size());
-  return ParticleView{l.x.data(), l.y.data(), l.vx.data(), l.vy.data(), l.rho.data(),
-                      l.m.data(), l.p.data(), vol.data(),  n,           n};
-}
 bool interior(double x, double y, double lo, double hi) {
   return x > lo && x < hi && y > lo && y < hi;
 }
@@ -389,8 +385,8 @@ TEST(DeltaSph, LaminarViscosityAtAWallIsTheMirroredWater) {
                    c, explicit_mirror);
     const double tol = 1e-11 * nu / (dx * dx);  // rounding of sums of terms up to about nu |du| / dx^2
     for (int i = 0; i < n; ++i) {
-      if (2.0 * water.y[i] <
-          k.support()) {  // the rows whose images are in the support: slowed into it (v0 < 0), along it if no slip
+      // the rows whose images are in the support: slowed into the floor (v0 < 0), and along it if no slip
+      if (2.0 * water.y[i] < k.support()) {
         EXPECT_GT(with_ghosts.ay[i], 0.0) << "particle " << i;
         if (no_slip)
           EXPECT_LT(with_ghosts.ax[i], 0.0) << "particle " << i;
