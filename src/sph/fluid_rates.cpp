@@ -11,11 +11,13 @@ namespace {
 inline double tensile_coefficient(double p, double rho, double eps_neg, double eps_pos) {
   return (p < 0.0 ? eps_neg * -p : eps_pos * p) / (rho * rho);
 }
-}  // namespace
 
-void momentum_rates(const ParticleView& pv, const FluidPairList& pairs, const PairList& wall_pairs,
-                    const WallParticles& walls, const PairList& ghost_pairs, const WallGhosts& ghosts,
-                    const std::vector<double>& grad_rho, const RateConstants& k, Rates& out) {
+// The momentum equation's body, compiled twice: with the laminar term (Laminar = true) and without it, so that
+// the default path (laminar_viscosity 0) carries no branch or accumulator of a term it does not use.
+template <bool Laminar>
+void momentum_rates_impl(const ParticleView& pv, const FluidPairList& pairs, const PairList& wall_pairs,
+                         const WallParticles& walls, const PairList& ghost_pairs, const WallGhosts& ghosts,
+                         const std::vector<double>& grad_rho, const RateConstants& k, Rates& out) {
   const int n = pv.n_owned;
   out.ax.assign(n, 0.0);
   out.ay.assign(n, 0.0);
@@ -27,7 +29,6 @@ void momentum_rates(const ParticleView& pv, const FluidPairList& pairs, const Pa
   const double inv_w_dx = 1.0 / k.w_dx;
   const double eta2 = 0.01 * k.h * k.h;
   const double viscosity = k.alpha * k.h * k.c0 * k.rho0;  // eq. 4
-  const bool laminar = k.laminar_nu > 0.0;
   const double four_nu = 4.0 * k.laminar_nu;
   const double body_norm = std::hypot(k.body_x, k.body_y);  // |b|, the same for every particle
 
@@ -36,7 +37,7 @@ void momentum_rates(const ParticleView& pv, const FluidPairList& pairs, const Pa
     const double ri_t = k.tensile ? tensile[i] : 0.0, inv_rhoi = 1.0 / rhoi, x_i = pv.x[i], y_i = pv.y[i];
     double ax = 0, ay = 0;
     double mu_i = 0.0;
-    double lx = 0.0, ly = 0.0;  // the laminar term, nu times the velocity's Laplacian
+    [[maybe_unused]] double lx = 0.0, ly = 0.0;  // the laminar term, nu times the velocity's Laplacian
     for_each_neighbour(pairs, i, [&](int j, int q) {
       const double ex = pv.x[j] - x_i, ey = pv.y[j] - y_i, r2 = ex * ex + ey * ey;  // r_ji
       const double vj = pv.volume[j];
@@ -55,7 +56,7 @@ void momentum_rates(const ParticleView& pv, const FluidPairList& pairs, const Pa
       ax -= scalar * pairs.f[q] * ex;
       ay -= scalar * pairs.f[q] * ey;
       mu_i = std::max(mu_i, std::abs(mu));
-      if (laminar) {
+      if constexpr (Laminar) {
         // Morris et al. (1997) in Lo & Shao's (2003) form: nu lap(u)_i = sum_j 4 nu m_j (r_ij.grad_i W_ij)
         // / ((rho_i + rho_j)(r_ij^2 + eta^2)) u_ij, with r_ij.grad_i W_ij = F r^2 (F < 0) and u_ij = -(du, dv)
         const double s = four_nu * pv.mass[j] * pairs.f[q] * r2 / ((rhoi + pv.rho[j]) * (r2 + eta2));
@@ -63,9 +64,13 @@ void momentum_rates(const ParticleView& pv, const FluidPairList& pairs, const Pa
         ly -= s * dv;
       }
     });
-    // without the laminar term (lx = 0) the same bits as before it: a fused a * b + 0 rounds as a * b does
-    ax = ax * inv_rhoi + lx;
-    ay = ay * inv_rhoi + ly;
+    if constexpr (Laminar) {
+      ax = ax * inv_rhoi + lx;
+      ay = ay * inv_rhoi + ly;
+    } else {
+      ax *= inv_rhoi;
+      ay *= inv_rhoi;
+    }
     max_mu = std::max(max_mu, k.h * mu_i);
 
     // Wall pressure: the eq. 4 pressure term over the ghost points behind the walls, their pressure continued
@@ -104,7 +109,7 @@ void momentum_rates(const ParticleView& pv, const FluidPairList& pairs, const Pa
         s += viscosity * (du_dot_e / (r2 + eta2)) * ghosts.volume[g] / rhoi * -ghost_pairs.f[q];
         ax += s * ghost_pairs.ex[q];
         ay += s * ghost_pairs.ey[q];
-        if (laminar) {
+        if constexpr (Laminar) {
           // the laminar term with the same ghost velocity (m_g = rho_i V_g, rho_g = rho_i): mirrored or reversed
           const double un = ui * ghosts.nx[g] + vi * ghosts.ny[g];
           const double dgx = k.wall_no_slip ? -2.0 * ui : -2.0 * un * ghosts.nx[g];
@@ -138,6 +143,16 @@ void momentum_rates(const ParticleView& pv, const FluidPairList& pairs, const Pa
   }
   out.max_mu = max_mu;
   out.max_accel = std::sqrt(max_a2);
+}
+}  // namespace
+
+void momentum_rates(const ParticleView& pv, const FluidPairList& pairs, const PairList& wall_pairs,
+                    const WallParticles& walls, const PairList& ghost_pairs, const WallGhosts& ghosts,
+                    const std::vector<double>& grad_rho, const RateConstants& k, Rates& out) {
+  if (k.laminar_nu > 0.0)
+    momentum_rates_impl<true>(pv, pairs, wall_pairs, walls, ghost_pairs, ghosts, grad_rho, k, out);
+  else
+    momentum_rates_impl<false>(pv, pairs, wall_pairs, walls, ghost_pairs, ghosts, grad_rho, k, out);
 }
 
 void continuity_rates(const ParticleView& pv, const FluidPairList& pairs, const PairList& ghost_pairs,
