@@ -40,6 +40,12 @@ refuse bad_key_value 's/fluid.spacing: \[0.006, 0.005\]/fluid.spacing: [0.006, -
 refuse no_source 's/, source: rho g (d - y)//' "no_source.yaml:4: reference.source"
 refuse noise_width 's/metric: noise, smooth: 0.02,/metric: noise,/' "noise_width.yaml:7: also\[0\].smooth: the noise metric needs"
 refuse also_probe 's/name: p_noise, probe: p_5mm/name: p_noise, probe: p_7mm/' "also_probe.yaml:7: also\[0\].probe: the scene has no probe 'p_7mm'"
+refuse members_axis 's/^resolution: fluid.spacing/resolution: fluid.spacing\nmembers: {vary: {fluid.spacing: [0.006, 0.005]}, probe: p_5mm, sample: 0.01, windows: [[0, 0.3]]}/' \
+  "members_axis.yaml:11: members.vary: 'fluid.spacing' is also an axis"
+refuse members_window 's/^resolution: fluid.spacing/resolution: fluid.spacing\nmembers: {vary: {fluid.cfl: [0.2, 0.199]}, probe: p_5mm, sample: 0.01, windows: [[0.3, 0.1]]}/' \
+  "members_window.yaml:11: members.windows: a list of \[FROM, TO\] with FROM < TO"
+refuse members_probe 's/^resolution: fluid.spacing/resolution: fluid.spacing\nmembers: {vary: {fluid.cfl: [0.2, 0.199]}, probe: p_9mm, sample: 0.01, windows: [[0, 0.3]]}/' \
+  "members_probe.yaml:11: members.probe: the scene has no probe 'p_9mm'"
 refuse list_lengths 's/^resolution: fluid.spacing/  fluid.xsph: [0.05]\ndesign: list/' "list_lengths.yaml:9: axes: design: list needs lists of one length"
 # One factor at a time: two keys of two values each are two points (a grid would be four).
 good | sed 's/^resolution: fluid.spacing/  fluid.xsph: [0.05, 0.0]\ndesign: list/' > "$work/list.yaml"
@@ -71,4 +77,48 @@ good | sed 's/fluid.spacing: \[0.006, 0.005\]/fluid.spacing: [0.005]/' > "$work/
   || { cat "$work/collect.log"; exit 1; }
 grep -q "1 run(s) of points no longer in" "$work/collect.log" || { cat "$work/collect.log"; exit 1; }
 [ "$(wc -l < "$csv")" = 2 ] || { cat "$csv"; echo "expected one point after the axis was shortened"; exit 1; }
-echo "tools/study: refusals and a two-point study ok"
+
+# An ensemble: each dx run at two Courant numbers. ensemble.md against the histories read here: two members'
+# standard deviation is |a - b| / sqrt(2), their mean (a + b) / 2, the noise of two means sqrt(s_a^2/2 + s_b^2/2).
+good | sed -e 's/^resolution: fluid.spacing/resolution: fluid.spacing\nmembers: {vary: {fluid.cfl: [0.2, 0.15]}, probe: p_5mm, sample: 0.01, windows: [[0, 0.2], [0.1, 0.2]]}/' \
+  -e 's/scene.end_time: 0.3/scene.end_time: 0.2/' -e 's/window: \[0.1, 0.3\]/window: [0.1, 0.2]/g' > "$work/ens.yaml"
+/usr/bin/python3 "$study" run "$work/ens.yaml" --out "$work/ens" > "$work/ens.log" 2>&1 || { cat "$work/ens.log"; exit 1; }
+[ -s "$work/ens/ensemble.png" ] || { echo "no ensemble.png"; exit 1; }
+/usr/bin/python3 - "$work/ens" <<'PY'
+import csv, json, os, sys
+import numpy as np
+out = sys.argv[1]
+runs = json.load(open(os.path.join(out, "runs.json")))
+grid = 0.01 * np.arange(21)
+hist = {}
+for run in runs:
+    v = dict(run["values"])
+    r = list(csv.DictReader(open(os.path.join(run["folder"], "probes.csv"))))
+    h = np.interp(grid, [float(x["t"]) for x in r], [float(x["p_5mm"]) for x in r])
+    hist.setdefault(v["fluid.spacing"], []).append(h)
+assert sorted(hist) == ["0.005", "0.006"] and all(len(h) == 2 for h in hist.values()), hist.keys()
+rms = lambda a, m: float(np.sqrt(np.mean(a[m] ** 2)))
+wins = [grid <= 0.2 + 1e-12, grid >= 0.1 - 1e-12]
+spread = {dx: [rms(np.abs(a - b) / np.sqrt(2), w) for w in wins] for dx, (a, b) in hist.items()}
+mean = {dx: (a + b) / 2 for dx, (a, b) in hist.items()}
+lines = open(os.path.join(out, "ensemble.md")).read().splitlines()
+def row(prefix):
+    hit = [l for l in lines if l.startswith(prefix)]
+    assert len(hit) == 1, (prefix, lines)
+    return [c.strip() for c in hit[0].strip("|").split("|")]
+# the table prints three significant digits: within half a unit of the third
+close = lambda text, x: abs(float(text) - x) <= 5e-3 * abs(x) + 1e-9
+for dx in hist:
+    cells = row(f"| spacing={dx} | 2 |")  # two members
+    assert all(close(c, s) for c, s in zip(cells[2:4], spread[dx])), (cells, spread[dx])
+    assert spread[dx][0] > 0, "two Courant numbers gave the same history"
+    assert close(cells[4], float(mean[dx].max())) and close(cells[5], float(mean[dx].min())), cells
+cells = row("| spacing=0.006 | spacing=0.005 |")
+for c, w in zip(cells[2:], wins):
+    diff, noise = (float(x) for x in c.split("/"))
+    assert close(str(diff), rms(mean["0.005"] - mean["0.006"], w)), (c, rms(mean["0.005"] - mean["0.006"], w))
+    ref = float(np.sqrt(np.mean(((hist["0.006"][0] - hist["0.006"][1]) ** 2 / 4
+                                 + (hist["0.005"][0] - hist["0.005"][1]) ** 2 / 4)[w])))
+    assert close(str(noise), ref), (c, ref)
+PY
+echo "tools/study: refusals, a two-point study and an ensemble ok"
