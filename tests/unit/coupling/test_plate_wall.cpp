@@ -393,5 +393,54 @@ TEST(PlateWallFreeSurface, AParticleMarkedAtAFreeSurfaceLeavingTheFaceDoesNotExp
   EXPECT_EQ(rate(-1.0, true), rate(-1.0, false));
 }
 
+TEST(PlateWallLaminar, DampsOnlyTheMotionRelativeToTheFaceAlongItsNormalAndThePlateTakesTheReaction) {
+  // The laminar viscous term over the face ghosts (fluid.laminar_viscosity, Morris et al. 1997) with the ghosts'
+  // velocity mirrored about the face (free slip, as the tank walls' without wall_no_slip): a particle 0.8 dx beside
+  // the right face (beyond the repulsion's dx/2, p = 0, no body force, no artificial viscosity) moving towards it
+  // and along it must be slowed in its motion towards the face only, in proportion to nu; the same motion with the
+  // plate moving alike (the particle at rest relative to the face) gets nothing; the plate takes the opposite force.
+  const Kernel kernel = paper_kernel();
+  PlateWall wall = paper_wall(kernel);
+  PlateWallConstants k = repulsion_constants(kernel);
+  const double x = kRight + 0.8 * kDx, y = 26.5 * kDx, rho = 1000.0, p = 0.0, mass = 1000.0 * kDx * kDx;
+  const double vx = -1.0, vy = 0.3;  // towards the face and up along it [m/s]
+  const std::int64_t gid = 9;
+  auto force = [&](double nu, double& ax, double& ay, double& plate_fx, double& plate_fy) {
+    k.laminar_nu = nu;
+    ax = ay = 0.0;
+    wall.find_pairs(&x, &y, 1, kernel);
+    EXPECT_EQ(wall.particles().size(), 1u);
+    wall.momentum(&vx, &vy, &rho, &p, &mass, &gid, k, &ax, &ay);
+    plate_fx = plate_fy = 0.0;
+    for (const auto& l : wall.loads()) {
+      plate_fx += l.fx;
+      plate_fy += l.fy;
+    }
+  };
+  double ax0, ay0, fx0, fy0, ax1, ay1, fx1, fy1, ax2, ay2, fx2, fy2;
+  force(0.0, ax0, ay0, fx0, fy0);
+  EXPECT_EQ(ax0, 0.0) << "without the term nothing acts here (the check below can fail)";
+  EXPECT_EQ(ay0, 0.0);
+  force(1.0e-3, ax1, ay1, fx1, fy1);
+  force(2.0e-3, ax2, ay2, fx2, fy2);
+  EXPECT_GT(ax1, 0.0) << "the approach towards the face (-x) is slowed";
+  EXPECT_NEAR(ay1, 0.0, 1e-9 * ax1) << "free slip: the motion along the face is not damped";
+  EXPECT_NEAR(ax2, 2.0 * ax1, 1e-12 * ax1) << "in proportion to nu";
+  EXPECT_NEAR(fx1, -mass * ax1, 1e-12 * mass * ax1) << "the plate takes the reaction";
+  EXPECT_NEAR(fy1, -mass * ay1, 1e-12 * mass * ax1);
+  // A damping rate of about nu / dx^2 (1e-3 / 2.25e-6 = 440 1/s) times the 1 m/s approach, within a decade either
+  // way: a term of the wrong size (a missing r^2 or V_g) lands far outside.
+  EXPECT_GT(ax1, 0.1 * 1.0e-3 / (kDx * kDx));
+  EXPECT_LT(ax1, 10.0 * 1.0e-3 / (kDx * kDx));
+  // The plate moving with the particle: no relative motion, no force.
+  PlateOutline moving = paper_outline(0.0795);
+  moving.vx.assign(moving.size(), vx);
+  moving.vy.assign(moving.size(), vy);
+  wall.set_outline(moving, kDx, kernel.support());
+  force(1.0e-3, ax1, ay1, fx1, fy1);
+  EXPECT_NEAR(ax1, 0.0, 1e-12);
+  EXPECT_NEAR(ay1, 0.0, 1e-12);
+}
+
 }  // namespace
 }  // namespace halfeti::sph
