@@ -102,8 +102,7 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
   // of all ranks together (getrusage: this process since it started).
   struct rusage usage {};
   getrusage(RUSAGE_SELF, &usage);
-  const double cpu_here = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
-                          1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+  const double cpu_here = process_cpu_seconds();
   const double rss_here = 1024.0 * static_cast<double>(usage.ru_maxrss);  // Linux reports kB
   double sums[2] = {cpu_here, rss_here}, rss_max = rss_here;
   MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, comm_);
@@ -161,6 +160,8 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
     io::Json cost = io::Json::object();
     cost.set("cpu_seconds", sums[0]).set("cpu_seconds_per_rank", sums[0] / size_);
     cost.set("peak_memory_bytes_busiest_rank", rss_max).set("peak_memory_bytes_all_ranks", sums[1]);
+    // The runs a restarted run continues: their CPU seconds (null when its checkpoint did not record them).
+    cost.set("earlier_cpu_seconds", std::isnan(earlier_cpu_) ? io::Json() : io::Json(earlier_cpu_));
     j.set("cost", cost);  // this run's (a restarted run's: since its restart)
     io::Json tj = io::Json::object();
     for (const auto& [phase, seconds] : timers.all()) tj.set(phase, seconds);

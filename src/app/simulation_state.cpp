@@ -2,6 +2,7 @@
 // puts them in the checkpoint's blocks and texts, and the run's own clock and accumulators beside them.
 #include <cerrno>
 #include <cstring>
+#include <limits>
 
 #include "halfeti/app/restart.hpp"
 #include "halfeti/app/simulation.hpp"
@@ -13,12 +14,20 @@ namespace halfeti::app {
 void Simulation::write_checkpoint(const std::string& label, bool between_steps) {
   ScopedTimer timer(timers_, "checkpoint");
   const double started = wall_seconds();
+  // The CPU seconds of all ranks so far, these processes' and the runs' they continue (collective: every rank
+  // writes the checkpoint).
+  double cpu = process_cpu_seconds();
+  MPI_Allreduce(MPI_IN_PLACE, &cpu, 1, MPI_DOUBLE, MPI_SUM, comm_);
   io::Checkpoint c;
   c.time = t_;
   c.steps = steps_;
   c.ranks = size_;
-  c.blocks["run"] = {t_, static_cast<double>(steps_), initial_mass_, max_density_variation_,
-                     earlier_wall_ + (run_start_ > 0.0 ? started - run_start_ : 0.0)};
+  c.blocks["run"] = {t_,
+                     static_cast<double>(steps_),
+                     initial_mass_,
+                     max_density_variation_,
+                     earlier_wall_ + (run_start_ > 0.0 ? started - run_start_ : 0.0),
+                     earlier_cpu_ + cpu};
   c.texts["scene"] = scene_.resolved_text();
   // A failure inside a step leaves a state for inspection, not one a step can start from.
   c.texts["written"] = between_steps ? "between steps" : "at a failure inside a step";
@@ -71,12 +80,15 @@ void Simulation::restore(io::Checkpoint c) {
     HALFETI_USER_ERROR("restart: '" << restart_path_ << "' was written " << text("written")
                                     << " (for inspection); continue from an earlier checkpoint");
   const auto& run = block("run");
-  if (run.size() != 5) HALFETI_USER_ERROR("restart: the run state of '" << restart_path_ << "' is malformed");
+  // Five entries: a checkpoint written before the CPU seconds were recorded (they stay unknown).
+  if (run.size() != 5 && run.size() != 6)
+    HALFETI_USER_ERROR("restart: the run state of '" << restart_path_ << "' is malformed");
   t_ = run[0];
   steps_ = static_cast<long long>(run[1]);
   initial_mass_ = run[2];
   max_density_variation_ = run[3];
   earlier_wall_ = run[4];
+  earlier_cpu_ = run.size() == 6 ? run[5] : std::numeric_limits<double>::quiet_NaN();
   steps_at_start_ = steps_;
   if (parts_.fluid) {
     const auto& f = block("fluid");

@@ -78,6 +78,24 @@ good | sed 's/fluid.spacing: \[0.006, 0.005\]/fluid.spacing: [0.005]/' > "$work/
   || { cat "$work/collect.log"; exit 1; }
 grep -q "1 run(s) of points no longer in" "$work/collect.log" || { cat "$work/collect.log"; exit 1; }
 [ "$(wc -l < "$csv")" = 2 ] || { cat "$csv"; echo "expected one point after the axis was shortened"; exit 1; }
+# That point run again in two legs (stopped after its first step, continued with --restart into its folder): its
+# cost is both legs', the summary's cpu_seconds and earlier_cpu_seconds, wall_time and earlier_wall_time.
+folder=$(/usr/bin/python3 -c 'import json, sys; print([r["folder"] for r in json.load(open(sys.argv[1]))
+                                                        if ["fluid.spacing", "0.005"] in r["values"]][0])' "$work/out/runs.json")
+legs="inputs/validation/hydrostatic.yaml --set scene.end_time=0.3 --set output.field_interval=0 --set output.checkpoint_interval=0 --set fluid.spacing=0.005 --out $folder"
+(cd "$root" && "$2/src/app/halfeti" run $legs --overwrite --max-wall 1e-6 > "$work/leg1.log" 2>&1) && { echo "the first leg did not stop"; exit 1; }
+(cd "$root" && "$2/src/app/halfeti" run $legs --restart "$folder" > "$work/leg2.log" 2>&1) || { cat "$work/leg2.log"; exit 1; }
+/usr/bin/python3 "$study" collect "$work/still.yaml" --out "$work/out" > "$work/collect.log" 2>&1 \
+  || { cat "$work/collect.log"; exit 1; }
+/usr/bin/python3 - "$csv" "$folder/summary.json" <<'PY'
+import csv, json, sys
+row = list(csv.DictReader(open(sys.argv[1])))[0]
+s = json.load(open(sys.argv[2]))
+assert s["earlier_wall_time"] > 0 and s["cost"]["earlier_cpu_seconds"] > 0, s
+for column, total in (("cpu_seconds", s["cost"]["cpu_seconds"] + s["cost"]["earlier_cpu_seconds"]),
+                      ("wall_seconds", s["wall_time"] + s["earlier_wall_time"])):
+    assert abs(float(row[column]) - total) <= 1e-6 * total, (column, row[column], total)
+PY
 
 # An ensemble: each dx run at two Courant numbers. ensemble.md against the histories read here: two members'
 # standard deviation is |a - b| / sqrt(2), their mean (a + b) / 2, the noise of two means sqrt(s_a^2/2 + s_b^2/2).

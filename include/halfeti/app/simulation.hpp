@@ -109,6 +109,9 @@ class Simulation {
   bool continuing_ = false;   // the restart writes into the folder of the run it continues
   std::string started_utc_;
   double run_start_ = 0.0, earlier_wall_ = 0.0, last_checkpoint_wall_ = 0.0, last_dt_ = 0.0;
+  // CPU seconds of all ranks of the runs this one continues (NaN: continued from a checkpoint that did not record
+  // them)
+  double earlier_cpu_ = 0.0;
   // The converged exchange (coupling.plate_wall_exchange: implicit): the step's saved start and this run's counts.
   struct ExchangeCounts {
     long long steps = 0, evaluations = 0, unconverged = 0;

@@ -2,6 +2,8 @@
 // summary.json. A ScopedTimer adds the time spent in its scope to one phase.
 #pragma once
 
+#include <sys/resource.h>
+
 #include <chrono>
 #include <map>
 #include <string>
@@ -11,6 +13,14 @@ namespace halfeti {
 // Seconds on a steady clock (differences only).
 inline double wall_seconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// CPU seconds (user + system) of this process since it started (getrusage).
+inline double process_cpu_seconds() {
+  struct rusage usage {};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+         1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
 }
 
 class PhaseTimers {

@@ -11,7 +11,9 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
+#include <limits>
 #include <numeric>
 
 #include "halfeti/io/checkpoint.hpp"
@@ -62,7 +64,7 @@ std::string latest(const std::string& run) {
 }
 
 // Every number of the two checkpoints agrees bit for bit: the particles (matched by global id), the parts' state
-// and the health log; only the wall time spent so far (the run block's last entry) may differ.
+// and the health log; only the wall and CPU seconds spent so far (the run block's last two entries) may differ.
 void expect_same_state(const std::string& a, const std::string& b) {
   ASSERT_FALSE(a.empty());
   ASSERT_FALSE(b.empty());
@@ -92,7 +94,7 @@ void expect_same_state(const std::string& a, const std::string& b) {
     const auto it = y.blocks.find(name);
     ASSERT_NE(it, y.blocks.end()) << name;
     std::vector<double> u = values, v = it->second;
-    if (name == "run") u.pop_back(), v.pop_back();  // the wall time
+    if (name == "run") u.resize(u.size() - 2), v.resize(v.size() - 2);  // the wall and CPU seconds
     EXPECT_EQ(u, v) << "block " << name;
   }
   for (const char* text : {"health_log", "active_warnings"}) {
@@ -137,6 +139,15 @@ std::string summary_status(const std::string& run) {
   return s.substr(from, s.find('"', from) - from);
 }
 
+// summary.json's cost.earlier_cpu_seconds: the CPU seconds of the runs a restarted run continues (NaN for null).
+double earlier_cpu_seconds(const std::string& run) {
+  const std::string s = test::read_text(run + "/summary.json"), key = "\"earlier_cpu_seconds\": ";
+  const auto at = s.find(key);
+  if (at == std::string::npos) return -1.0;
+  if (s.compare(at + key.size(), 4, "null") == 0) return std::numeric_limits<double>::quiet_NaN();
+  return std::stod(s.substr(at + key.size()));
+}
+
 }  // namespace
 
 TEST(Restart, WaterAloneContinuesBitForBitOnOtherRankCounts) {
@@ -179,6 +190,13 @@ TEST(Restart, MaxWallStopsResumablyAndTheRunContinuesInItsOwnFolder) {
   ASSERT_EQ(test::run_scene(c.scene, run, c.args + end_time(c.end) + " --max-wall 1e-6", 2), 5)
       << test::read_text(run + ".stderr");
   EXPECT_EQ(summary_status(run), "stopped");
+  EXPECT_EQ(earlier_cpu_seconds(ref), 0.0);  // a run that continues none
+  // The checkpoint records the CPU seconds the two ranks spent so far (start-up and one step: more than nothing,
+  // less than the wall time since the test began on two ranks).
+  const io::Checkpoint first = io::read_checkpoint(latest(run));
+  ASSERT_EQ(first.blocks.at("run").size(), 6u);
+  const double cpu_first = first.blocks.at("run")[5];
+  EXPECT_GT(cpu_first, 0.0);
   const std::string log = test::read_text(run + "/log.txt");
   EXPECT_NE(log.find("stopped: the wall-time limit (--max-wall 1e-06 s) at t = "), std::string::npos) << log;
   EXPECT_NE(log.find("continue with: halfeti run"), std::string::npos) << log;
@@ -188,6 +206,8 @@ TEST(Restart, MaxWallStopsResumablyAndTheRunContinuesInItsOwnFolder) {
   ASSERT_EQ(test::run_scene(c.scene, run, c.args + end_time(c.end) + " --restart " + run, 1), 0)
       << test::read_text(run + ".stderr");
   EXPECT_EQ(summary_status(run), "ok");
+  // The last leg's summary counts the CPU seconds of the two legs before it: at least the first leg's.
+  EXPECT_GE(earlier_cpu_seconds(run), cpu_first);
   expect_same_state(latest(ref), latest(run));
   EXPECT_EQ(test::read_text(run + "/probes.csv"), test::read_text(ref + "/probes.csv"));
   EXPECT_EQ(test::read_text(run + "/fields/plate.xdmf"), test::read_text(ref + "/fields/plate.xdmf"));
@@ -196,6 +216,29 @@ TEST(Restart, MaxWallStopsResumablyAndTheRunContinuesInItsOwnFolder) {
   const std::string all = test::read_text(run + "/log.txt");
   EXPECT_EQ(std::count(all.begin(), all.end(), '\n') > 10, true);
   EXPECT_NE(all.find("restart: from "), std::string::npos);
+}
+
+TEST(Restart, FromACheckpointWithoutCpuSecondsTheirCountIsUnknown) {
+  // A checkpoint of the earlier layout (the run block without the CPU seconds) still continues; the summary's
+  // earlier_cpu_seconds is then null, not a number that leaves them out.
+  const Case& c = kCoupled;
+  const std::string leg1 = test::binary_path("restart_old_layout_a"),
+                    leg2 = test::binary_path("restart_old_layout_b");
+  ASSERT_EQ(test::run_scene(c.scene, leg1, c.args + end_time(c.middle), 1), 0)
+      << test::read_text(leg1 + ".stderr");
+  io::Checkpoint old = io::read_checkpoint(latest(leg1));
+  old.blocks["run"].pop_back();
+  const std::string path = leg1 + "_old_layout.h5";
+  io::write_checkpoint(MPI_COMM_WORLD, path, old);
+  ASSERT_EQ(test::run_scene(c.scene, leg2, c.args + end_time(c.end) + " --restart " + path, 1), 0)
+      << test::read_text(leg2 + ".stderr");
+  EXPECT_TRUE(std::isnan(earlier_cpu_seconds(leg2))) << test::read_text(leg2 + "/summary.json");
+  // and the run it continues the same, bit for bit, as from the checkpoint as written
+  const std::string leg3 = test::binary_path("restart_old_layout_c");
+  ASSERT_EQ(test::run_scene(c.scene, leg3, c.args + end_time(c.end) + " --restart " + leg1, 1), 0)
+      << test::read_text(leg3 + ".stderr");
+  EXPECT_GT(earlier_cpu_seconds(leg3), 0.0);
+  expect_same_state(latest(leg3), latest(leg2));
 }
 
 TEST(Restart, SigtermStopsAtAStepBoundaryWithACheckpoint) {
