@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # tools/study: a malformed study is refused with one line naming the file, the line and the key, before any run;
 # a small study (still water at two dx, 0.3 s) runs end to end, and its CSV holds each point's error against the
-# closed form and its cost, with the charts drawn; and an ensemble (`members:`), whose table is checked against the
-# histories read directly.
+# closed form and its cost, with the charts drawn (a point continued with --restart costs all its legs); and an
+# ensemble (`members:`), whose table is checked against the histories read directly.
 set -euo pipefail
 root=$1
 work=$2/study_test

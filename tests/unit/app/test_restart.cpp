@@ -4,7 +4,8 @@
 // with the free-surface mark, 3 -> 1); the stops a cluster job meets (a
 // signal, --max-wall) leave a checkpoint and a summary that say so; a restart that would change the physics, a
 // folder that holds another run, a file that is no checkpoint are one clear error each; a full disk is an I/O error
-// (exit status 6) naming the file and the reason, with no half-written file left.
+// (exit status 6) naming the file and the reason, with no half-written file left. A restarted run's summary counts
+// the CPU seconds of the legs before it (null from a checkpoint of the earlier layout, which still continues).
 #include <gtest/gtest.h>
 #include <sys/mount.h>
 #include <sys/stat.h>
@@ -191,8 +192,7 @@ TEST(Restart, MaxWallStopsResumablyAndTheRunContinuesInItsOwnFolder) {
       << test::read_text(run + ".stderr");
   EXPECT_EQ(summary_status(run), "stopped");
   EXPECT_EQ(earlier_cpu_seconds(ref), 0.0);  // a run that continues none
-  // The checkpoint records the CPU seconds the two ranks spent so far (start-up and one step: more than nothing,
-  // less than the wall time since the test began on two ranks).
+  // The checkpoint records the CPU seconds the two ranks spent so far (start-up and one step: more than nothing).
   const io::Checkpoint first = io::read_checkpoint(latest(run));
   ASSERT_EQ(first.blocks.at("run").size(), 6u);
   const double cpu_first = first.blocks.at("run")[5];
