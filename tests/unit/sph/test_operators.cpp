@@ -114,7 +114,6 @@ TEST(DensityGradient, RenormalisedGradientExactForLinearFieldEvenAtCorners) {
   auto l = make_lattice(k, dx, 12, 12, 30.0, -100.0);
   std::vector<double> vol;
   const ParticleView pv = lattice_view(l, vol);
-  const int n = pv.n_owned;
   std::vector<double> g;
   density_gradient(pv, l.pairs, g);
   for (std::size_t i = 0; i < l.x.size(); ++i) {
