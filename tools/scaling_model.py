@@ -27,6 +27,11 @@ import sys
 GHOST_BYTES = 6 * 8 + 8 + 2 * 8 + 2 * 8  # x, y, vx, vy, rho, m; gid; grad rho; the second 2-vector update
 
 
+def steps_this_run(s):
+    """The steps its loop wall time and timers count: a restarted run's since its restart."""
+    return s.get("steps_this_run", s["steps"])
+
+
 def load(run):
     path = os.path.join(run, "summary.json")
     if not os.path.isfile(path):
@@ -51,13 +56,13 @@ def main():
     if s1.get("ranks") != 1 or s2.get("ranks") != 2:
         sys.exit("tools/scaling_model.py: RUN_1 must be a 1-rank run and RUN_2 a 2-rank run of the same scene")
     n = s1["initial_particles"]
-    t1 = s1["loop_wall_time"] / s1["steps"]
+    t1 = s1["loop_wall_time"] / steps_this_run(s1)
     d2 = s2["ranks_detail"]
     m = max(d2["messages_sent_per_step"])
     b = max(d2["bytes_sent_per_step"])
     g = b / GHOST_BYTES
-    c1 = s1["ranks_detail"]["compute_seconds"][0] / s1["steps"]
-    c2 = max(d2["compute_seconds"]) / s2["steps"]
+    c1 = s1["ranks_detail"]["compute_seconds"][0] / steps_this_run(s1)
+    c2 = max(d2["compute_seconds"]) / steps_this_run(s2)
     node = c2 / (c1 / 2)
     rows = []
     for p in [int(x) for x in a.ranks.split(",")]:

@@ -102,7 +102,7 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
   // of all ranks together (getrusage: this process since it started).
   struct rusage usage {};
   getrusage(RUSAGE_SELF, &usage);
-  const double cpu_here = process_cpu_seconds();
+  const double cpu_here = cpu_seconds(usage);
   const double rss_here = 1024.0 * static_cast<double>(usage.ru_maxrss);  // Linux reports kB
   double sums[2] = {cpu_here, rss_here}, rss_max = rss_here;
   MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, comm_);
@@ -148,11 +148,12 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
     j.set("structure_dofs", dofs);
     j.set("cables", static_cast<int>(parts_.cable_setups.size()));
     j.set("steps", steps_);
+    const long long steps_here = steps_ - steps_at_start_;
+    j.set("steps_this_run", steps_here);  // a restarted run's since its restart, as its timers and cost
     j.set("simulated_time", t_);
     j.set("wall_time", wall);  // this run's (a restarted run's: since its restart)
     j.set("loop_wall_time", loop_wall);
     j.set("earlier_wall_time", earlier_wall_);  // of the runs it continues
-    const long long steps_here = steps_ - steps_at_start_;
     j.set("ns_per_particle_step",
           particles > 0 && steps_here > 0
               ? io::Json(1e9 * loop_wall / (static_cast<double>(particles) * steps_here))
@@ -168,7 +169,7 @@ void Simulation::write_summary(const std::string& status, double wall, double lo
     j.set("timers", tj);
     if (parts_.fluid) {  // this run's (a restarted run's: since its restart)
       io::Json comm = io::Json::object();
-      const double steps_d = std::max(1.0, static_cast<double>(steps_ - steps_at_start_));
+      const double steps_d = std::max(1.0, static_cast<double>(steps_here));
       io::Json msgs = io::Json::array(), bytes = io::Json::array(), wait = io::Json::array(),
                work = io::Json::array(), memory = io::Json::array();
       double work_max = 0.0, work_sum = 0.0;

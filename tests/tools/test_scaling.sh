@@ -35,7 +35,8 @@ for r in rows:
     per_step = []
     for k in (1, 2):
         s = json.load(open(os.path.join(out, f"ranks_{r['ranks']}_{k}", "summary.json")))
-        per_step.append(s["loop_wall_time"] / s["steps"])
+        assert s["steps_this_run"] == s["steps"], s  # a run that continues none
+        per_step.append(s["loop_wall_time"] / s["steps_this_run"])
     assert abs(float(r["seconds_per_step"]) - statistics.median(per_step)) <= 1e-12 * max(per_step), (r, per_step)
     assert float(r["seconds_per_step_min"]) == min(per_step) and float(r["seconds_per_step_max"]) == max(per_step)
     e, lo, hi = float(r["efficiency"]), float(r["efficiency_min"]), float(r["efficiency_max"])

@@ -149,6 +149,13 @@ double earlier_cpu_seconds(const std::string& run) {
   return std::stod(s.substr(at + key.size()));
 }
 
+// An integer of summary.json's top level (steps, steps_this_run); -1 when it is missing.
+long long summary_integer(const std::string& run, const std::string& name) {
+  const std::string s = test::read_text(run + "/summary.json"), key = "\"" + name + "\": ";
+  const auto at = s.find(key);
+  return at == std::string::npos ? -1 : std::stoll(s.substr(at + key.size()));
+}
+
 }  // namespace
 
 TEST(Restart, WaterAloneContinuesBitForBitOnOtherRankCounts) {
@@ -192,6 +199,9 @@ TEST(Restart, MaxWallStopsResumablyAndTheRunContinuesInItsOwnFolder) {
       << test::read_text(run + ".stderr");
   EXPECT_EQ(summary_status(run), "stopped");
   EXPECT_EQ(earlier_cpu_seconds(ref), 0.0);  // a run that continues none
+  EXPECT_GT(summary_integer(ref, "steps"), 1);
+  EXPECT_EQ(summary_integer(ref, "steps_this_run"), summary_integer(ref, "steps"));
+  EXPECT_EQ(summary_integer(run, "steps_this_run"), summary_integer(run, "steps"));
   // The checkpoint records the CPU seconds the two ranks spent so far (start-up and one step: more than nothing).
   const io::Checkpoint first = io::read_checkpoint(latest(run));
   ASSERT_EQ(first.blocks.at("run").size(), 6u);
@@ -203,9 +213,14 @@ TEST(Restart, MaxWallStopsResumablyAndTheRunContinuesInItsOwnFolder) {
   ASSERT_EQ(test::run_scene(c.scene, run, c.args + end_time(c.end) + " --max-wall 1e-6 --restart " + run, 2),
             5)
       << test::read_text(run + ".stderr");
+  const long long steps_before = io::read_checkpoint(latest(run)).steps;
   ASSERT_EQ(test::run_scene(c.scene, run, c.args + end_time(c.end) + " --restart " + run, 1), 0)
       << test::read_text(run + ".stderr");
   EXPECT_EQ(summary_status(run), "ok");
+  // Its steps are the whole run's; steps_this_run, which its wall time and timers count, the last leg's.
+  EXPECT_EQ(summary_integer(run, "steps"), summary_integer(ref, "steps"));
+  EXPECT_EQ(summary_integer(run, "steps_this_run"), summary_integer(ref, "steps") - steps_before);
+  EXPECT_GT(steps_before, 0);
   // The last leg's summary counts the CPU seconds of the two legs before it: at least the first leg's.
   EXPECT_GE(earlier_cpu_seconds(run), cpu_first);
   expect_same_state(latest(ref), latest(run));
