@@ -127,10 +127,7 @@ void Simulation::restore(io::Checkpoint c) {
   }
   if (parts_.coupling) {
     parts_.coupling->restore_state(block("coupling"));
-    if (parts_.coupling->parameters().plate_wall)
-      parts_.fluid->set_plate_outline(parts_.coupling->plate_outline());
-    else
-      parts_.fluid->set_barriers(parts_.coupling->outline());
+    show_plate_to_fluid();
   }
 }
 

@@ -62,6 +62,7 @@ class Simulation {
       const sph::Fluid& f);  // the owned particles, for the coupling
   void sample(double t);
   void prepare_structure();
+  void show_plate_to_fluid();  // the coupling's current plate surface as the water's plate wall or barriers
   void step_structure(double t, double dt);
   void load_cables(double t);
   void open_field_series();          // the field series of the run's parts (simulation_outputs.cpp)

@@ -219,6 +219,9 @@ class ContactCoupling {
   double fluid_load_x() const { return fluid_load_[0]; }  // N/m, total on the plate, every rank
   double fluid_load_y() const { return fluid_load_[1]; }
   const SurfacePolyline& surface() const { return surface_; }
+  // Collective: re-reads the plate's surface (points, velocities, accelerations) after the plate moved outside a
+  // step, as its static start moves it; the surface is otherwise read when this object is built and after a step.
+  void refresh_surface() { broadcast_surface(); }
 
   const CouplingStepReport& last_step() const { return last_; }
   const PlateLoadBreakdown& load_breakdown() const { return breakdown_; }
