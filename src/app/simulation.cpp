@@ -71,9 +71,9 @@ void Simulation::prepare_structure() {
     parts_.plate->initialise_acceleration(0.0);
   });
   // The water and the coupling were given the plate's surface as built; the static start moved it (the cables'
-  // pull and the plate's weight: 0.09 mm down at the top of a 6 mm plate of 1.25 MPa). Without this the first step
-  // took the built surface for the plate's place and velocity: the interface added mass's spring pulled the
-  // surface back toward it and the water saw the faces move by the static displacement in one step.
+  // pull and the plate's weight). Without this the first step took the built surface for the plate's place and
+  // velocity: the interface added mass's spring pulled the surface back toward it and the water saw the faces move
+  // by the static displacement in one step (docs/coupling.md section 22).
   if (parts_.coupling) {
     parts_.coupling->refresh_surface();
     show_plate_to_fluid();

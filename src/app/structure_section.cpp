@@ -125,9 +125,10 @@ std::shared_ptr<const Schema> structure_schema() {
                .below(1.0));
     s->add(Key::real("time_step", "step of a scene without water (with water the fluid sets it)", "s")
                .positive());
-    s->add(Key::boolean("start_static",
-                        "solve the static equilibrium (gravity, cables, loads) before t = 0; the water's load is not "
-                        "in it: it meets the plate at t = 0")
+    s->add(Key::boolean(
+               "start_static",
+               "solve the static equilibrium (gravity, cables, loads) before t = 0; the water's load is not "
+               "in it: it meets the plate at t = 0")
                .def(false));
     s->add(Key::integer(
                "ranks",
