@@ -132,28 +132,31 @@ void expect_restarts_bit_for_bit(const Case& c, const std::string& name,
   }
 }
 
+// The text of summary.json after `"name": ` (its value and what follows), "" when the key is missing.
+std::string summary_value(const std::string& run, const std::string& name) {
+  const std::string s = test::read_text(run + "/summary.json"), key = "\"" + name + "\": ";
+  const auto at = s.find(key);
+  return at == std::string::npos ? std::string() : s.substr(at + key.size());
+}
+
 std::string summary_status(const std::string& run) {
-  const std::string s = test::read_text(run + "/summary.json");
-  const auto at = s.find("\"exit_status\": \"");
-  if (at == std::string::npos) return "(none)";
-  const auto from = at + 16;
-  return s.substr(from, s.find('"', from) - from);
+  const std::string v = summary_value(run, "exit_status");
+  if (v.empty()) return "(none)";
+  return v.substr(1, v.find('"', 1) - 1);
 }
 
 // summary.json's cost.earlier_cpu_seconds: the CPU seconds of the runs a restarted run continues (NaN for null).
 double earlier_cpu_seconds(const std::string& run) {
-  const std::string s = test::read_text(run + "/summary.json"), key = "\"earlier_cpu_seconds\": ";
-  const auto at = s.find(key);
-  if (at == std::string::npos) return -1.0;
-  if (s.compare(at + key.size(), 4, "null") == 0) return std::numeric_limits<double>::quiet_NaN();
-  return std::stod(s.substr(at + key.size()));
+  const std::string v = summary_value(run, "earlier_cpu_seconds");
+  if (v.empty()) return -1.0;
+  if (v.compare(0, 4, "null") == 0) return std::numeric_limits<double>::quiet_NaN();
+  return std::stod(v);
 }
 
 // An integer of summary.json's top level (steps, steps_this_run); -1 when it is missing.
 long long summary_integer(const std::string& run, const std::string& name) {
-  const std::string s = test::read_text(run + "/summary.json"), key = "\"" + name + "\": ";
-  const auto at = s.find(key);
-  return at == std::string::npos ? -1 : std::stoll(s.substr(at + key.size()));
+  const std::string v = summary_value(run, name);
+  return v.empty() ? -1 : std::stoll(v);
 }
 
 }  // namespace
