@@ -47,6 +47,9 @@ const Case kImplicit{kCoupled.scene,
                          " --set structure.newmark_gamma=0.5 --set structure.newmark_beta=0.25",
                      0.1, 0.05};
 
+// The same with the Q4 enhanced-strain plate: its elements' enhanced parameters are state the checkpoint carries.
+const Case kQ4Eas{kCoupled.scene, kCoupled.args + " --set structure.element=q4_eas", kCoupled.end, kCoupled.middle};
+
 // The dam break onto the plate at L/40 with water that has left a face meeting it as a free surface
 // (coupling.plate_wall_free_surface, docs/coupling.md section 21; c0 100 m/s, where it runs the explicit exchange):
 // particles are marked at 0.126-0.129, 0.132 and 0.139-0.141 s, on both sides of the restart.
@@ -167,6 +170,10 @@ TEST(Restart, WaterAloneContinuesBitForBitOnOtherRankCounts) {
 
 TEST(Restart, CoupledSceneWithCablesContinuesBitForBitOnOtherRankCounts) {
   expect_restarts_bit_for_bit(kCoupled, "coupled");
+}
+
+TEST(Restart, EnhancedStrainPlateContinuesBitForBitOnOtherRankCounts) {
+  expect_restarts_bit_for_bit(kQ4Eas, "q4_eas", {{3, 1}});
 }
 
 TEST(Restart, ConvergedExchangeContinuesBitForBitOnOtherRankCounts) {
