@@ -48,7 +48,8 @@ const Case kImplicit{kCoupled.scene,
                      0.1, 0.05};
 
 // The same with the Q4 enhanced-strain plate: its elements' enhanced parameters are state the checkpoint carries.
-const Case kQ4Eas{kCoupled.scene, kCoupled.args + " --set structure.element=q4_eas", kCoupled.end, kCoupled.middle};
+const Case kQ4Eas{kCoupled.scene, kCoupled.args + " --set structure.element=q4_eas", kCoupled.end,
+                  kCoupled.middle};
 
 // The dam break onto the plate at L/40 with water that has left a face meeting it as a free surface
 // (coupling.plate_wall_free_surface, docs/coupling.md section 21; c0 100 m/s, where it runs the explicit exchange):
