@@ -2,7 +2,9 @@
 every run before anything runs or is submitted, and SLURM time requests from the estimates."""
 import os
 import re
+import shutil
 import subprocess
+import tempfile
 from concurrent.futures import ThreadPoolExecutor
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -14,6 +16,19 @@ def mpi_env():
     """The environment of a local run (Open MPI as root, more ranks than cores)."""
     return dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
                 OMPI_MCA_rmaps_base_oversubscribe="1")
+
+
+def run_alone(cmd):
+    """subprocess.run(cmd) for a halfeti process started beside others at the same moment (`check` and `compare`
+    of many points at once): each gets its own Open MPI session folder. Open MPI 4.1 creates one per user and
+    host under /tmp at start-up, and two processes creating it together can fail ("A call to mkdir was unable to
+    create the desired directory ... File exists"), which is how such a check once failed under load."""
+    folder = tempfile.mkdtemp(prefix="halfeti-ompi-")
+    try:
+        return subprocess.run(cmd, capture_output=True, text=True,
+                              env=dict(os.environ, OMPI_MCA_orte_tmpdir_base=folder))
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
 
 
 def default_launcher():
@@ -44,8 +59,7 @@ def check(points):
     without water has no estimate (0)."""
     def one(point):
         scene, sets = point
-        return subprocess.run([HALFETI, "check", scene] + sum((["--set", s] for s in sets), []),
-                              capture_output=True, text=True)
+        return run_alone([HALFETI, "check", scene] + sum((["--set", s] for s in sets), []))
     with ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as pool:
         results = list(pool.map(one, points))
     out = []
