@@ -22,7 +22,7 @@ def run_alone(cmd):
     """subprocess.run(cmd) for a halfeti process started beside others at the same moment (`check` and `compare`
     of many points at once): each gets its own Open MPI session folder. Open MPI 4.1 creates one per user and
     host under /tmp at start-up, and two processes creating it together can fail ("A call to mkdir was unable to
-    create the desired directory ... File exists"), which is how such a check once failed under load."""
+    create the desired directory ... File exists")."""
     folder = tempfile.mkdtemp(prefix="halfeti-ompi-")
     try:
         return subprocess.run(cmd, capture_output=True, text=True,
