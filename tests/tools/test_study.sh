@@ -2,7 +2,8 @@
 # tools/study: a malformed study is refused with one line naming the file, the line and the key, before any run;
 # a small study (still water at two dx, 0.3 s) runs end to end, and its CSV holds each point's error against the
 # closed form and its cost, with the charts drawn (a point continued with --restart costs all its legs); and an
-# ensemble (`members:`), whose table is checked against the histories read directly.
+# ensemble (`members:`), whose tables (the spread, the mean histories, and each member's statistics for two
+# probes) are checked against the histories read directly.
 set -euo pipefail
 root=$1
 work=$2/study_test
@@ -47,6 +48,10 @@ refuse members_window 's/^resolution: fluid.spacing/resolution: fluid.spacing\nm
   "members_window.yaml:11: members.windows: a list of \[FROM, TO\] with FROM < TO"
 refuse members_probe 's/^resolution: fluid.spacing/resolution: fluid.spacing\nmembers: {vary: {fluid.cfl: [0.2, 0.199]}, probe: p_9mm, sample: 0.01, windows: [[0, 0.3]]}/' \
   "members_probe.yaml:11: members.probe: the scene has no probe 'p_9mm'"
+refuse members_also 's/^resolution: fluid.spacing/resolution: fluid.spacing\nmembers: {vary: {fluid.cfl: [0.2, 0.199]}, probe: p_5mm, sample: 0.01, windows: [[0, 0.3]], also: [{probe: p_8mm}]}/' \
+  "members_also.yaml:11: members.also\[0\].probe: the scene has no probe 'p_8mm'"
+refuse members_also_key 's/^resolution: fluid.spacing/resolution: fluid.spacing\nmembers: {vary: {fluid.cfl: [0.2, 0.199]}, probe: p_5mm, sample: 0.01, windows: [[0, 0.3]], also: [{probe: p_25mm, scale: 2}]}/' \
+  "members_also_key.yaml:11: members.also\[0\].scale: unknown key"
 refuse list_lengths 's/^resolution: fluid.spacing/  fluid.xsph: [0.05]\ndesign: list/' "list_lengths.yaml:9: axes: design: list needs lists of one length"
 # One factor at a time: two keys of two values each are two points (a grid would be four).
 good | sed 's/^resolution: fluid.spacing/  fluid.xsph: [0.05, 0.0]\ndesign: list/' > "$work/list.yaml"
@@ -115,30 +120,33 @@ PY
 
 # An ensemble: each dx run at two Courant numbers. ensemble.md against the histories read here: two members'
 # standard deviation is |a - b| / sqrt(2), their mean (a + b) / 2, the noise of two means sqrt(s_a^2/2 + s_b^2/2).
-good | sed -e 's/^resolution: fluid.spacing/resolution: fluid.spacing\nmembers: {vary: {fluid.cfl: [0.2, 0.15]}, probe: p_5mm, sample: 0.01, windows: [[0, 0.2], [0.1, 0.2]]}/' \
+good | sed -e 's/^resolution: fluid.spacing/resolution: fluid.spacing\nmembers: {vary: {fluid.cfl: [0.2, 0.15]}, probe: p_5mm, sample: 0.01, windows: [[0, 0.2], [0.1, 0.2]], also: [{probe: p_25mm, probe_scale: 0.001, unit: kPa}]}/' \
   -e 's/scene.end_time: 0.3/scene.end_time: 0.2/' -e 's/window: \[0.1, 0.3\]/window: [0.1, 0.2]/g' > "$work/ens.yaml"
 /usr/bin/python3 "$study" run "$work/ens.yaml" --out "$work/ens" > "$work/ens.log" 2>&1 || { cat "$work/ens.log"; exit 1; }
-[ -s "$work/ens/ensemble.png" ] || { echo "no ensemble.png"; exit 1; }
+[ -s "$work/ens/ensemble.png" ] && [ -s "$work/ens/ensemble_statistics.png" ] || { echo "no ensemble charts"; exit 1; }
 /usr/bin/python3 - "$work/ens" <<'PY'
 import csv, json, os, sys
 import numpy as np
 out = sys.argv[1]
 runs = json.load(open(os.path.join(out, "runs.json")))
 grid = 0.01 * np.arange(21)
-hist = {}
+hist, hist25 = {}, {}
 for run in runs:
     v = dict(run["values"])
     r = list(csv.DictReader(open(os.path.join(run["folder"], "probes.csv"))))
     h = np.interp(grid, [float(x["t"]) for x in r], [float(x["p_5mm"]) for x in r])
     hist.setdefault(v["fluid.spacing"], []).append(h)
+    h = np.interp(grid, [float(x["t"]) for x in r], [float(x["p_25mm"]) for x in r])
+    hist25.setdefault(v["fluid.spacing"], []).append(1e-3 * h)
 assert sorted(hist) == ["0.005", "0.006"] and all(len(h) == 2 for h in hist.values()), hist.keys()
 rms = lambda a, m: float(np.sqrt(np.mean(a[m] ** 2)))
 wins = [grid <= 0.2 + 1e-12, grid >= 0.1 - 1e-12]
 spread = {dx: [rms(np.abs(a - b) / np.sqrt(2), w) for w in wins] for dx, (a, b) in hist.items()}
 mean = {dx: (a + b) / 2 for dx, (a, b) in hist.items()}
 lines = open(os.path.join(out, "ensemble.md")).read().splitlines()
+cut = next(i for i, l in enumerate(lines) if l.startswith("Statistics of"))  # the spread's tables come first
 def row(prefix):
-    hit = [l for l in lines if l.startswith(prefix)]
+    hit = [l for l in lines[:cut] if l.startswith(prefix)]
     assert len(hit) == 1, (prefix, lines)
     return [c.strip() for c in hit[0].strip("|").split("|")]
 # the table prints three significant digits: within half a unit of the third
@@ -155,5 +163,30 @@ for c, w in zip(cells[2:], wins):
     ref = float(np.sqrt(np.mean(((hist["0.006"][0] - hist["0.006"][1]) ** 2 / 4
                                  + (hist["0.005"][0] - hist["0.005"][1]) ** 2 / 4)[w])))
     assert close(str(noise), ref), (c, ref)
+# The statistics tables: each member's time mean, SD in time and largest magnitude over a window; per point their
+# mean +- the two members' SD (|a - b| / sqrt(2)); successive points' difference / sqrt(s_a^2/2 + s_b^2/2).
+stats = lambda h, w: [h[w].mean(), h[w].std(), np.abs(h[w]).max()]
+def section(probe):
+    at = [i for i, l in enumerate(lines) if l.startswith(f"Statistics of each member's `{probe}`")]
+    assert len(at) == 1, (probe, lines)
+    return lines[at[0]:]
+for probe, hs in (("p_5mm", hist), ("p_25mm", hist25)):
+    part = section(probe)
+    assert ("times 0.001 [kPa]" in part[0]) == (probe == "p_25mm"), part[0]
+    for dx, (a, b) in hs.items():
+        for w, wt in zip(wins, ("0-0.2 s", "0.1-0.2 s")):
+            hit = [l for l in part if l.startswith(f"| spacing={dx} | {wt} |")]
+            cells = [c.strip() for c in hit[0].strip("|").split("|")][2:]
+            for c, sa, sb in zip(cells, stats(a, w), stats(b, w)):
+                m, sd = (float(x) for x in c.split("+-"))
+                assert close(str(m), (sa + sb) / 2) and abs(sd - abs(sa - sb) / np.sqrt(2)) <= 5e-2 * abs(sa - sb) + 1e-9, (c, sa, sb)
+    hit = [l for l in part if l.startswith("| spacing=0.006 | spacing=0.005 | 0.1-0.2 s |")]
+    cells = [c.strip() for c in hit[0].strip("|").split("|")][3:]
+    s6, s5 = [np.array([stats(h, wins[1]) for h in hs[dx]]) for dx in ("0.006", "0.005")]
+    for c, k in zip(cells, range(3)):
+        diff, noise = (float(x) for x in c.split("/"))
+        assert close(str(diff), s5[:, k].mean() - s6[:, k].mean()), (probe, c)
+        ref = np.sqrt(np.var(s6[:, k], ddof=1) / 2 + np.var(s5[:, k], ddof=1) / 2)
+        assert abs(noise - ref) <= 5e-2 * ref + 1e-9, (probe, c, ref)
 PY
 echo "tools/study: refusals, a two-point study and an ensemble ok"
